@@ -1,0 +1,102 @@
+#pragma once
+
+/**
+ * @file
+ * The Simulator owns a pneuma run: the membrane mesh and its unknowns, the
+ * loads and boundary conditions, the Newton solver with adaptive load
+ * stepping through the load stages, and the output. The header is kept
+ * light (the implementation is private) so that tests and the main program
+ * compile fast.
+ */
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace pneuma
+{
+  /// Exit codes of a run (README, doc/user-guide.md).
+  enum ExitCode : int
+  {
+    success       = 0,
+    bad_input     = 1,
+    solver_failed = 2
+  };
+
+  /// What a finished run reports (also written to summary.json).
+  struct RunSummary
+  {
+    int          exit_code = success;
+    std::string  message;
+    unsigned int n_cells = 0, n_dofs = 0, n_steps = 0, n_cutbacks = 0,
+                 n_newton_iterations = 0, n_linear_solves = 0;
+    double       final_time = 0., wall_seconds = 0.;
+    /// Displacement at each monitor point at the end of the run.
+    std::vector<std::array<double, 3>> monitor_displacements;
+    /// Reference position of each monitor point (the nearest vertex).
+    std::vector<std::array<double, 3>> monitor_positions;
+    /// Enclosed volume, reference and current (closed surfaces only).
+    double initial_volume = 0., volume = 0.;
+    /// Sum of the reactions at prescribed dofs and of the external loads.
+    std::array<double, 3> reaction{{0., 0., 0.}}, applied_load{{0., 0., 0.}};
+    /// Newton residual norms of the last load step.
+    std::vector<double> last_residual_history;
+  };
+
+  /// Result of a finite-difference check of the tangent.
+  struct TangentCheck
+  {
+    double relative_error = 0.;
+    double tangent_norm   = 0.;
+  };
+
+  /// One pneuma run, configured by a ParameterHandler.
+  class Simulator
+  {
+  public:
+    explicit Simulator(const MPI_Comm comm);
+    ~Simulator();
+
+    /// Declare every parameter of a run.
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    /// Read the parameters; throws InputError with a clear message.
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /// Build the mesh, check it against the input, and set up the system.
+    void
+    setup();
+
+    /// Run all load stages; returns the summary (and writes outputs).
+    RunSummary
+    run();
+
+    /**
+     * Compare the assembled tangent at the current state plus a random
+     * perturbation of size @p amplitude with central finite differences of
+     * the residual (step @p h), at pseudo time @p t.
+     */
+    TangentCheck
+    check_tangent(const double t, const double amplitude, const double h);
+
+  private:
+    class Impl;
+    std::unique_ptr<Impl> impl;
+  };
+
+  /**
+   * Declare all parameters, read @p file (.prm or .json) and apply the
+   * "Path/To/Entry=value" overrides; throws InputError naming the file or
+   * parameter.
+   */
+  void
+  read_parameters(dealii::ParameterHandler &      prm,
+                  const std::string &             file,
+                  const std::vector<std::string> &overrides = {});
+} // namespace pneuma

@@ -1,0 +1,79 @@
+#pragma once
+
+/**
+ * @file
+ * Prescribed displacements of the membrane: clamped edges and symmetry
+ * planes (fixed components on boundary ids), supports at points (fixed
+ * components at the mesh vertex nearest to a given point), fixed rigid
+ * regions (every node of a material region held), and a prescribed
+ * displacement function of (x, y, z, t) on boundary ids.
+ */
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/parsed_function.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+
+#include <pneuma/core/linear_algebra.h>
+
+#include <array>
+#include <map>
+#include <memory>
+#include <set>
+#include <vector>
+
+namespace pneuma
+{
+  namespace loads
+  {
+    using namespace dealii;
+
+    /// "Boundary conditions" subsection.
+    class BoundaryConditions
+    {
+    public:
+      BoundaryConditions();
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+
+      /**
+       * Add the constraints for Newton updates (homogeneous: the update is
+       * zero on every prescribed component) to @p constraints.
+       */
+      void
+      add_update_constraints(const DoFHandler<2, 3> &   dof_handler,
+                             AffineConstraints<double> &constraints) const;
+
+      /**
+       * Write the prescribed values at pseudo time @p t into the owned
+       * entries of @p solution (zero on fixed components).
+       */
+      void
+      set_prescribed_values(const Mapping<2, 3> &   mapping,
+                            const DoFHandler<2, 3> &dof_handler,
+                            const double            t,
+                            LA::Vector &            solution) const;
+
+      /// Check that every named boundary or region exists in the mesh.
+      void
+      check_against_mesh(const DoFHandler<2, 3> &dof_handler) const;
+
+    private:
+      /// Map of (prescribed dof, value at t) on the locally relevant dofs.
+      std::map<types::global_dof_index, double>
+      prescribed_dofs(const Mapping<2, 3> &   mapping,
+                      const DoFHandler<2, 3> &dof_handler,
+                      const double            t) const;
+
+      std::map<types::boundary_id, std::array<bool, 3>> fixed_boundaries;
+      std::vector<std::pair<Point<3>, std::array<bool, 3>>> fixed_points;
+      std::set<types::material_id>                     fixed_regions;
+      std::set<types::boundary_id>                     displaced_boundaries;
+      std::unique_ptr<Functions::ParsedFunction<3>>    displacement_function;
+    };
+  } // namespace loads
+} // namespace pneuma

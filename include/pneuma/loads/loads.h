@@ -1,0 +1,100 @@
+#pragma once
+
+/**
+ * @file
+ * The loads on the membrane, all functions of the reference position
+ * (x, y, z) and of the pseudo time t (load curves, several stages in
+ * sequence): follower pressure on the current surface, gravity, dead surface
+ * and line loads.
+ */
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/parsed_function.h>
+
+#include <memory>
+#include <set>
+
+namespace pneuma
+{
+  namespace loads
+  {
+    using namespace dealii;
+
+    /**
+     * "Loads" subsection. The pressure p(x,t) acts along the outward normal
+     * of the current surface (a follower load, virtual work
+     * \f$\int p\,n\cdot\delta u\,da\f$) on the regions listed in "Pressure
+     * regions". Gravity acts on the mass rho H per reference area. The
+     * surface load is a dead traction per reference area; the line load is a
+     * dead force per reference length on the boundaries listed.
+     */
+    class Loads
+    {
+    public:
+      Loads();
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+
+      /// Follower pressure [Pa] at reference point @p x and pseudo time @p t.
+      double
+      pressure(const Point<3> &x, const double t) const;
+      /// True if the pressure acts on cells of material @p material_id.
+      bool
+      pressure_acts_on(const types::material_id material_id) const;
+      /// Gravity vector [m/s^2] at pseudo time @p t.
+      Tensor<1, 3>
+      gravity(const double t) const;
+      /// Dead surface traction [N/m^2 per reference area].
+      Tensor<1, 3>
+      surface_load(const Point<3> &x, const double t) const;
+      /// Dead line load [N/m per reference length] on boundary @p id.
+      Tensor<1, 3>
+      line_load(const Point<3> &x, const double t) const;
+
+      bool
+      has_gravity() const
+      {
+        return gravity_on;
+      }
+      bool
+      has_surface_load() const
+      {
+        return surface_load_on;
+      }
+      const std::set<types::boundary_id> &
+      line_load_boundaries() const
+      {
+        return line_load_ids;
+      }
+      const std::set<types::material_id> &
+      pressure_regions() const
+      {
+        return pressure_ids;
+      }
+
+    private:
+      std::unique_ptr<Functions::ParsedFunction<3>> pressure_function;
+      std::unique_ptr<Functions::ParsedFunction<3>> gravity_function;
+      std::unique_ptr<Functions::ParsedFunction<3>> surface_function;
+      std::unique_ptr<Functions::ParsedFunction<3>> line_function;
+      std::set<types::material_id>                  pressure_ids;
+      std::set<types::boundary_id>                  line_load_ids;
+      bool gravity_on = false, surface_load_on = false;
+    };
+
+    /// Parse a ParsedFunction subsection, turning parser errors into a
+    /// message that names the subsection.
+    void
+    parse_function(ParameterHandler &           prm,
+                   Functions::ParsedFunction<3> &function,
+                   const std::string &           name,
+                   const std::string &           path);
+
+    /// Parse a comma separated list of non-negative ids.
+    std::set<unsigned int>
+    parse_id_list(const std::string &text, const std::string &path);
+  } // namespace loads
+} // namespace pneuma

@@ -1,0 +1,88 @@
+#pragma once
+
+/**
+ * @file
+ * Residual and consistent tangent of the finite-strain membrane with its
+ * loads (doc/theory.md, sections "Weak form" and "Follower pressure").
+ *
+ * Residual: \f$r_i = \int_{\Omega_0} H S_{\alpha\beta}\, a_\alpha\cdot
+ * \partial_\beta N_i\,dA - \int p\,(a_1\times a_2)\cdot N_i\,dA
+ * - \int (\rho H g + t_0)\cdot N_i\,dA - \int_{\Gamma} q_0\cdot N_i\,dL\f$.
+ * Tangent: material part \f$B_i:\mathbb{D}:B_j\f$ with
+ * \f$B_i = \mathrm{sym}(a_\alpha\cdot\partial_\beta N_i)\f$, geometric
+ * part \f$\partial_\alpha N_i\,S_{\alpha\beta}\,\partial_\beta N_j\f$, and
+ * the follower-pressure load stiffness
+ * \f$-p N_i\,(\partial_1 N_j\times a_2 + a_1\times\partial_2 N_j)\f$.
+ */
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+
+#include <pneuma/core/linear_algebra.h>
+#include <pneuma/geometry/scene_generator.h>
+#include <pneuma/loads/loads.h>
+#include <pneuma/membrane/constitutive_law.h>
+
+namespace pneuma
+{
+  namespace membrane
+  {
+    using namespace dealii;
+
+    /// What the caller wants from one pass over the cells.
+    struct AssemblyRequest
+    {
+      /// Pseudo time at which loads are evaluated.
+      double time = 0.;
+      /// Residual r = f_int - f_ext (owned, compressed), or nullptr.
+      LA::Vector *residual = nullptr;
+      /// Tangent dr/du, or nullptr.
+      LA::SparseMatrix *tangent = nullptr;
+      /// External load vector f_ext (owned), or nullptr.
+      LA::Vector *external = nullptr;
+    };
+
+    /// Assembles the membrane with its loads on a distributed mesh.
+    class MembraneAssembler
+    {
+    public:
+      MembraneAssembler(const geometry::SceneGenerator &geometry,
+                        const MaterialRegions &         materials,
+                        const loads::Loads &            loads);
+
+      /// Set the discretisation used by all later calls.
+      void
+      reinit(const Mapping<2, 3> &   mapping,
+             const DoFHandler<2, 3> &dof_handler,
+             const unsigned int      degree);
+
+      /// Assemble at the ghosted displacement @p u as @p request asks.
+      void
+      assemble(const LA::Vector &               u,
+               const AffineConstraints<double> &constraints,
+               const AssemblyRequest &          request) const;
+
+      /**
+       * Vector surface Laplacian L_ij = int grad_S N_i . grad_S N_j dA (same
+       * component), the geometric stiffness of a unit isotropic prestress;
+       * Newton's regularisation.
+       */
+      void
+      surface_laplacian(const AffineConstraints<double> &constraints,
+                        LA::SparseMatrix &               L) const;
+
+      /// Volume enclosed by the current surface, V = 1/3 int x.n da.
+      double
+      enclosed_volume(const LA::Vector &u) const;
+
+    private:
+      const geometry::SceneGenerator &geometry;
+      const MaterialRegions &         materials;
+      const loads::Loads &            loads;
+      const Mapping<2, 3> *           mapping     = nullptr;
+      const DoFHandler<2, 3> *        dof_handler = nullptr;
+      unsigned int                    degree      = 1;
+    };
+  } // namespace membrane
+} // namespace pneuma

@@ -1,0 +1,75 @@
+#pragma once
+
+/**
+ * @file
+ * Adaptive load stepping in pseudo time through a sequence of load stages.
+ * Load curves are functions of the pseudo time t; a stage is an interval
+ * [t_{k-1}, t_k] (e.g. inflate on [0,1], then load transversely on [1,2]).
+ * A step whose Newton iteration fails is cut back; a step that converged in
+ * few iterations lets the next one grow.
+ */
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <vector>
+
+namespace pneuma
+{
+  namespace solvers
+  {
+    using namespace dealii;
+
+    /// "Load stepping" subsection and the increment control.
+    class LoadStepping
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+
+      /// End of the last stage.
+      double
+      end_time() const
+      {
+        return stage_ends.back();
+      }
+      /// Index of the stage that contains (t, t + epsilon].
+      unsigned int
+      stage_of(const double t) const;
+      /// Target of the next step from @p t with increment @p dt, never
+      /// stepping over a stage end.
+      double
+      next_time(const double t, const double dt) const;
+      /// Increment after a converged step with @p iterations.
+      double
+      grown(const double dt, const unsigned int iterations) const;
+      /// Increment after a failed step.
+      double
+      cut(const double dt) const
+      {
+        return dt * cut_back_factor;
+      }
+      double
+      initial() const
+      {
+        return initial_increment;
+      }
+      double
+      minimum() const
+      {
+        return minimum_increment;
+      }
+      /// True if @p t is (numerically) at or beyond the end.
+      bool
+      finished(const double t) const;
+
+    private:
+      std::vector<double> stage_ends;
+      double              initial_increment = 1., minimum_increment = 1e-4,
+             maximum_increment = 1., growth_factor = 1.5,
+             cut_back_factor = 0.5;
+      unsigned int easy_iterations = 4;
+    };
+  } // namespace solvers
+} // namespace pneuma

@@ -1,0 +1,91 @@
+#include <deal.II/base/utilities.h>
+
+#include <pneuma/core/input_error.h>
+#include <pneuma/core/simulator.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace pneuma
+{
+  namespace
+  {
+    /// The user-relevant part of a deal.II exception text.
+    std::string
+    short_message(const std::exception &e)
+    {
+      std::string       text = e.what();
+      const std::string key  = "Additional information:";
+      const auto        pos  = text.find(key);
+      if (pos != std::string::npos)
+        text = text.substr(pos + key.size());
+      const auto stack = text.find("Stacktrace:");
+      if (stack != std::string::npos)
+        text = text.substr(0, stack);
+      // Collapse white space and dashes of the deal.II frame.
+      std::string out;
+      bool        space = false;
+      for (const char c : text)
+        {
+          if (c == '\n' || c == ' ' || c == '\t')
+            space = true;
+          else if (c != '-' || !out.empty())
+            {
+              if (space && !out.empty())
+                out += ' ';
+              out += c;
+              space = false;
+            }
+        }
+      while (!out.empty() && (out.back() == '-' || out.back() == ' '))
+        out.pop_back();
+      return out;
+    }
+  } // namespace
+
+  void
+  read_parameters(dealii::ParameterHandler &      prm,
+                  const std::string &             file,
+                  const std::vector<std::string> &overrides)
+  {
+    Simulator::declare_parameters(prm);
+    {
+      std::ifstream in(file);
+      check_input(static_cast<bool>(in), file, "cannot open parameter file");
+    }
+    try
+      {
+        prm.parse_input(file, "", /*skip_undefined=*/false, true);
+      }
+    catch (const std::exception &e)
+      {
+        throw InputError(file, short_message(e));
+      }
+    for (const auto &o : overrides)
+      {
+        const auto eq = o.find('=');
+        check_input(eq != std::string::npos,
+                    "--set " + o,
+                    "expected Path/To/Entry=value");
+        const auto path =
+          dealii::Utilities::split_string_list(o.substr(0, eq), '/');
+        const std::string value = dealii::Utilities::trim(o.substr(eq + 1));
+        check_input(!path.empty(), "--set " + o, "empty parameter path");
+        unsigned int depth = 0;
+        try
+          {
+            for (unsigned int i = 0; i + 1 < path.size(); ++i, ++depth)
+              prm.enter_subsection(path[i]);
+            prm.set(path.back(), value);
+          }
+        catch (const std::exception &e)
+          {
+            for (; depth > 0; --depth)
+              prm.leave_subsection();
+            throw InputError(o.substr(0, eq), short_message(e));
+          }
+        for (; depth > 0; --depth)
+          prm.leave_subsection();
+      }
+  }
+} // namespace pneuma

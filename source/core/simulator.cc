@@ -1,0 +1,378 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/lac/sparsity_tools.h>
+
+#include <pneuma/core/input_error.h>
+
+#include "simulator_impl.h"
+
+#include <cmath>
+#include <iomanip>
+
+namespace pneuma
+{
+  // ------------------------------------------------------------------
+  // Construction and parameters
+  // ------------------------------------------------------------------
+  Simulator::Impl::Impl(const MPI_Comm comm)
+    : comm(comm)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
+    , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
+    , triangulation(comm,
+                    Triangulation<2, 3>::limit_level_difference_at_vertices)
+    , dof_handler(triangulation)
+    , assembler(geometry, materials, loads)
+  {}
+
+  Simulator::Simulator(const MPI_Comm comm)
+    : impl(std::make_unique<Impl>(comm))
+  {}
+
+  Simulator::~Simulator() = default;
+
+  void
+  Simulator::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Discretisation");
+    prm.declare_entry("Polynomial degree",
+                      "1",
+                      Patterns::Integer(1, 2),
+                      "Degree of the FE_Q displacement; the mapping of the "
+                      "reference surface has the same degree.");
+    prm.leave_subsection();
+    geometry::SceneGenerator::declare_parameters(prm);
+    membrane::MaterialRegions::declare_parameters(prm);
+    loads::Loads::declare_parameters(prm);
+    loads::BoundaryConditions::declare_parameters(prm);
+    solvers::LoadStepping::declare_parameters(prm);
+    solvers::NewtonSolver::declare_parameters(prm);
+    solvers::LinearSolver::declare_parameters(prm);
+    OutputParameters::declare_parameters(prm);
+  }
+
+  void
+  Simulator::parse_parameters(ParameterHandler &prm)
+  {
+    Impl &s = *impl;
+    prm.enter_subsection("Discretisation");
+    s.degree = prm.get_integer("Polynomial degree");
+    prm.leave_subsection();
+    s.geometry.parse_parameters(prm);
+    s.materials.parse_parameters(prm);
+    s.loads.parse_parameters(prm);
+    s.boundary_conditions.parse_parameters(prm);
+    s.stepping.parse_parameters(prm);
+    s.newton.parse_parameters(prm);
+    s.linear_solver.parse_parameters(prm);
+    s.output.parse_parameters(prm);
+  }
+
+  // ------------------------------------------------------------------
+  // Setup
+  // ------------------------------------------------------------------
+  void
+  Simulator::setup()
+  {
+    Impl &s = *impl;
+    TimerOutput::Scope t(s.timer, "setup");
+    s.geometry.create_triangulation(s.triangulation);
+    s.fe      = std::make_unique<FESystem<2, 3>>(FE_Q<2, 3>(s.degree), 3);
+    s.mapping = std::make_unique<MappingQ<2, 3>>(s.degree);
+
+    // Every region a cell is in must have a valid material; every id
+    // named in the input must exist in the mesh.
+    std::set<unsigned int> local_ids;
+    for (const auto &cell : s.triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        local_ids.insert(cell->material_id());
+    const auto all_ids = Utilities::MPI::compute_set_union(
+      std::vector<unsigned int>(local_ids.begin(), local_ids.end()), s.comm);
+    for (const auto id : all_ids)
+      (void)s.materials[id];
+    for (const auto id : s.loads.pressure_regions())
+      check_input(std::find(all_ids.begin(), all_ids.end(), id) !=
+                    all_ids.end(),
+                  "Loads/Pressure regions",
+                  "the mesh has no cells in region " + std::to_string(id));
+
+    s.setup_system();
+    s.boundary_conditions.check_against_mesh(s.dof_handler);
+  }
+
+  void
+  Simulator::Impl::setup_system()
+  {
+    dof_handler.distribute_dofs(*fe);
+    locally_owned    = dof_handler.locally_owned_dofs();
+    locally_relevant = DoFTools::extract_locally_relevant_dofs(dof_handler);
+    make_constraints();
+
+    DynamicSparsityPattern dsp(locally_relevant);
+    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+    SparsityTools::distribute_sparsity_pattern(dsp,
+                                               locally_owned,
+                                               comm,
+                                               locally_relevant);
+    tangent.reinit(locally_owned, locally_owned, dsp, comm);
+    solution.reinit(locally_owned, comm);
+    external.reinit(locally_owned, comm);
+    ghosted.reinit(locally_owned, locally_relevant, comm);
+
+    assembler.reinit(*mapping, dof_handler, degree);
+    laplacian.reinit(locally_owned, locally_owned, dsp, comm);
+    assembler.surface_laplacian(constraints, laplacian);
+
+    // AMG near-null space: the three rigid translations, i.e. one
+    // indicator per displacement component over the owned dofs.
+    std::vector<std::vector<bool>> modes(3,
+                                         std::vector<bool>(
+                                           locally_owned.n_elements()));
+    for (unsigned int c = 0; c < 3; ++c)
+      {
+        std::vector<bool> mask(3, false);
+        mask[c]             = true;
+        const IndexSet dofs = DoFTools::extract_dofs(dof_handler,
+                                                     ComponentMask(mask));
+        for (unsigned int k = 0; k < locally_owned.n_elements(); ++k)
+          modes[c][k] = dofs.is_element(locally_owned.nth_index_in_set(k));
+      }
+    linear_solver.set_constant_modes(modes);
+  }
+
+  void
+  Simulator::Impl::make_constraints()
+  {
+    constraints.clear();
+    constraints.reinit(locally_relevant);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    boundary_conditions.add_update_constraints(dof_handler, constraints);
+    constraints.close();
+  }
+
+  // ------------------------------------------------------------------
+  // The nonlinear problem seen by Newton
+  // ------------------------------------------------------------------
+  void
+  Simulator::Impl::assemble(const LA::Vector &u, LA::Vector &residual)
+  {
+    TimerOutput::Scope t(timer, "assembly");
+    ghosted = u;
+    membrane::AssemblyRequest request;
+    request.time     = current_time;
+    request.residual = &residual;
+    request.tangent  = &tangent;
+    request.external = &external;
+    assembler.assemble(ghosted, constraints, request);
+  }
+
+  void
+  Simulator::Impl::solve_linear(const double      shift,
+                                const LA::Vector &rhs,
+                                LA::Vector &      du)
+  {
+    TimerOutput::Scope t(timer, "linear solve");
+    if (shift > 0.)
+      tangent.add(shift, laplacian);
+    linear_solver.solve(tangent, du, rhs);
+    constraints.distribute(du);
+    ++n_linear_solves;
+  }
+
+  double
+  Simulator::Impl::shift_scale()
+  {
+    double       k_sum = 0., m_sum = 0.;
+    for (const auto i : locally_owned)
+      if (!constraints.is_constrained(i))
+        {
+          k_sum += std::abs(tangent.diag_element(i));
+          m_sum += laplacian.diag_element(i);
+        }
+    k_sum = Utilities::MPI::sum(k_sum, comm);
+    m_sum = Utilities::MPI::sum(m_sum, comm);
+    return m_sum > 0. ? k_sum / m_sum : 0.;
+  }
+
+  double
+  Simulator::Impl::load_norm()
+  {
+    return external.l2_norm();
+  }
+
+  // ------------------------------------------------------------------
+  // Load stepping through the stages
+  // ------------------------------------------------------------------
+  RunSummary
+  Simulator::run()
+  {
+    return impl->run();
+  }
+
+  RunSummary
+  Simulator::Impl::run()
+  {
+    RunSummary summary;
+    summary.n_cells = triangulation.n_global_active_cells();
+    summary.n_dofs  = dof_handler.n_dofs();
+    pcout << "pneuma: " << summary.n_cells << " membrane cells, "
+          << summary.n_dofs << " dofs, degree " << degree << ", "
+          << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)\n";
+
+    prepare_output_directory();
+    locate_monitor_points();
+
+    solution     = 0.;
+    current_time = 0.;
+    boundary_conditions.set_prescribed_values(*mapping,
+                                              dof_handler,
+                                              0.,
+                                              solution);
+    ghosted = solution;
+    if (geometry.is_closed())
+      initial_volume = assembler.enclosed_volume(ghosted);
+    summary.initial_volume = initial_volume;
+    write_history_row(0, 0., 0);
+    if (output.write_vtu)
+      write_vtu(0, 0.);
+
+    double       dt   = stepping.initial();
+    unsigned int step = 0;
+    // Bergan's current stiffness parameter: (dt/|du|) relative to the
+    // first step of the stage; near zero at a limit point.
+    double       stiffness_reference = 0., stiffness_parameter = 1.;
+    unsigned int stiffness_stage     = numbers::invalid_unsigned_int;
+    LA::Vector   last_converged(solution);
+
+    while (!stepping.finished(current_time))
+      {
+        const double t_old  = current_time;
+        const double t_new  = stepping.next_time(t_old, dt);
+        last_converged      = solution;
+        current_time        = t_new;
+        boundary_conditions.set_prescribed_values(*mapping,
+                                                  dof_handler,
+                                                  t_new,
+                                                  solution);
+        pcout << "Step " << step + 1 << "  t = " << t_new << "  dt = "
+              << t_new - t_old << std::endl;
+        const auto result = newton.solve(*this, solution, pcout);
+        summary.n_newton_iterations += result.iterations;
+
+        if (!result.converged)
+          {
+            ++summary.n_cutbacks;
+            solution     = last_converged;
+            current_time = t_old;
+            dt           = stepping.cut(t_new - t_old);
+            pcout << "  Newton failed (" << result.failure_reason
+                  << "); cutting back to dt = " << dt << std::endl;
+            if (dt < stepping.minimum())
+              {
+                std::ostringstream msg;
+                msg << "the load step could not be completed at t = " << t_old
+                    << " even with the minimum increment "
+                    << stepping.minimum() << " (" << result.failure_reason
+                    << ")";
+                if (stiffness_parameter < 0.1)
+                  msg << "; a limit point was reached: the current stiffness "
+                         "parameter fell to "
+                      << stiffness_parameter
+                      << ", so the load cannot grow further under load "
+                         "control (use volume or gas-amount control)";
+                msg << ". The last converged state (t = " << t_old
+                    << ") is written.";
+                summary.exit_code = solver_failed;
+                summary.message   = msg.str();
+                break;
+              }
+            continue;
+          }
+
+        // Converged step.
+        ++step;
+        LA::Vector increment(solution);
+        increment -= last_converged;
+        const double ratio =
+          (t_new - t_old) / std::max(increment.l2_norm(), 1e-300);
+        const unsigned int stage = stepping.stage_of(t_old);
+        if (stage != stiffness_stage)
+          {
+            stiffness_stage     = stage;
+            stiffness_reference = ratio;
+          }
+        stiffness_parameter         = ratio / stiffness_reference;
+        summary.last_residual_history = result.residual_history;
+        pcout << "  converged in " << result.iterations
+              << " iterations, wall " << std::fixed << std::setprecision(2)
+              << wall_clock.wall_time() << " s" << std::defaultfloat
+              << std::setprecision(6) << std::endl;
+        write_history_row(step, t_new, result.iterations);
+        if (output.write_vtu && output.vtu_interval > 0 &&
+            step % output.vtu_interval == 0)
+          write_vtu(step, t_new);
+        dt = stepping.grown(t_new - t_old, result.iterations);
+      }
+
+    summary.n_steps         = step;
+    summary.final_time      = current_time;
+    summary.n_linear_solves = n_linear_solves;
+    ghosted                 = solution;
+    // The last converged state is always written.
+    if (output.write_vtu &&
+        (summary.exit_code != success || output.vtu_interval == 0 ||
+         step % output.vtu_interval != 0))
+      write_vtu(step, current_time);
+    summary.monitor_displacements = monitor_displacements();
+    summary.monitor_positions     = monitor_positions;
+    if (geometry.is_closed())
+      summary.volume = assembler.enclosed_volume(ghosted);
+    compute_reactions(summary.reaction, summary.applied_load);
+    summary.wall_seconds = wall_clock.wall_time();
+    write_summary(summary);
+    return summary;
+  }
+
+  // ------------------------------------------------------------------
+  // Finite-difference check of the tangent
+  // ------------------------------------------------------------------
+  TangentCheck
+  Simulator::check_tangent(const double t,
+                           const double amplitude,
+                           const double h)
+  {
+    Impl &s        = *impl;
+    s.current_time = t;
+    // A smooth random state: random nodal values scaled by amplitude.
+    LA::Vector u(s.solution);
+    for (const auto i : s.locally_owned)
+      u[i] = amplitude * (2. * std::sin(1.7 * i + 0.3) * std::cos(0.37 * i));
+    u.compress(VectorOperation::insert);
+    s.constraints.set_zero(u);
+
+    LA::Vector r(u), r_plus(u), r_minus(u), direction(u), Kd(u), fd(u);
+    for (const auto i : s.locally_owned)
+      direction[i] = std::cos(0.91 * i + 0.1);
+    direction.compress(VectorOperation::insert);
+    s.constraints.set_zero(direction);
+
+    s.assemble(u, r);
+    s.tangent.vmult(Kd, direction);
+
+    LA::Vector up(u);
+    up.add(h, direction);
+    s.assemble(up, r_plus);
+    LA::Vector um(u);
+    um.add(-h, direction);
+    s.assemble(um, r_minus);
+    fd = r_plus;
+    fd -= r_minus;
+    fd *= 1. / (2. * h);
+    TangentCheck check;
+    check.tangent_norm = Kd.l2_norm();
+    fd -= Kd;
+    check.relative_error = fd.l2_norm() / std::max(check.tangent_norm, 1e-300);
+    return check;
+  }
+} // namespace pneuma

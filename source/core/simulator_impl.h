@@ -1,0 +1,132 @@
+#pragma once
+
+// Private to the Simulator: its state, shared by the .cc files of core/.
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/lac/affine_constraints.h>
+
+#include <pneuma/core/linear_algebra.h>
+#include <pneuma/core/simulator.h>
+#include <pneuma/geometry/scene_generator.h>
+#include <pneuma/loads/boundary_conditions.h>
+#include <pneuma/loads/loads.h>
+#include <pneuma/membrane/constitutive_law.h>
+#include <pneuma/membrane/membrane_assembler.h>
+#include <pneuma/solvers/linear_solver.h>
+#include <pneuma/solvers/load_stepping.h>
+#include <pneuma/solvers/newton_solver.h>
+
+#include <fstream>
+#include <memory>
+
+namespace pneuma
+{
+  using namespace dealii;
+
+  /// "Output" subsection.
+  struct OutputParameters
+  {
+    std::string           directory = "output";
+    unsigned int          vtu_interval = 1;
+    bool                  write_vtu    = true;
+    bool                  test_output  = false;
+    std::vector<Point<3>> monitor_points;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  class Simulator::Impl : public solvers::NonlinearProblem
+  {
+  public:
+    explicit Impl(const MPI_Comm comm);
+
+    // --- setup (simulator.cc)
+    void
+    setup_system();
+    void
+    make_constraints();
+
+    // --- NonlinearProblem
+    void
+    assemble(const LA::Vector &u, LA::Vector &residual) override;
+    void
+    solve_linear(const double      shift,
+                 const LA::Vector &rhs,
+                 LA::Vector &      du) override;
+    double
+    shift_scale() override;
+    double
+    load_norm() override;
+
+    // --- run (simulator.cc)
+    RunSummary
+    run();
+
+    // --- output (simulator_output.cc)
+    void
+    prepare_output_directory();
+    void
+    write_vtu(const unsigned int step, const double t);
+    void
+    write_history_row(const unsigned int step,
+                      const double       t,
+                      const unsigned int newton_iterations);
+    void
+    write_summary(const RunSummary &summary);
+    void
+    locate_monitor_points();
+    std::vector<std::array<double, 3>>
+    monitor_displacements();
+    void
+    compute_reactions(std::array<double, 3> &reaction,
+                      std::array<double, 3> &applied);
+
+    MPI_Comm           comm;
+    ConditionalOStream pcout;
+    TimerOutput        timer;
+    Timer              wall_clock;
+
+    // Parameters.
+    geometry::SceneGenerator      geometry;
+    membrane::MaterialRegions     materials;
+    loads::Loads                  loads;
+    loads::BoundaryConditions     boundary_conditions;
+    solvers::NewtonSolver         newton;
+    solvers::LinearSolver         linear_solver;
+    solvers::LoadStepping         stepping;
+    OutputParameters              output;
+    unsigned int                  degree = 1;
+
+    // Discretisation.
+    parallel::distributed::Triangulation<2, 3> triangulation;
+    std::unique_ptr<FESystem<2, 3>>            fe;
+    std::unique_ptr<MappingQ<2, 3>>            mapping;
+    DoFHandler<2, 3>                           dof_handler;
+    IndexSet                                   locally_owned, locally_relevant;
+    AffineConstraints<double>                  constraints;
+    membrane::MembraneAssembler                assembler;
+
+    // State.
+    LA::SparseMatrix tangent, laplacian;
+    LA::Vector       solution, ghosted, external;
+    double           current_time = 0.;
+    double           initial_volume = 0.;
+    unsigned int     n_linear_solves = 0;
+
+    // Monitor points: (owning rank's) dof indices of the nearest vertex.
+    std::vector<std::array<types::global_dof_index, 3>> monitor_dofs;
+    std::vector<std::array<double, 3>>                  monitor_positions;
+
+    // Output records.
+    std::vector<std::pair<double, std::string>> pvd_records;
+    std::unique_ptr<std::ofstream>               history;
+  };
+} // namespace pneuma

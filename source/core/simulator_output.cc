@@ -1,0 +1,344 @@
+#include <deal.II/base/utilities.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/numerics/data_out.h>
+
+#include <pneuma/core/input_error.h>
+#include <pneuma/postprocess/membrane_fields.h>
+
+#include "simulator_impl.h"
+
+#include <filesystem>
+#include <iomanip>
+
+namespace pneuma
+{
+  void
+  OutputParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    prm.declare_entry("Directory",
+                      "output",
+                      Patterns::Anything(),
+                      "Where solution.pvd, history.csv, summary.json and "
+                      "parameters.prm are written (created if missing).");
+    prm.declare_entry("Write VTU",
+                      "true",
+                      Patterns::Bool(),
+                      "Write solution-NNNN.pvtu/.vtu and solution.pvd.");
+    prm.declare_entry("VTU interval",
+                      "1",
+                      Patterns::Integer(0),
+                      "Write VTU every this many converged steps (0: only "
+                      "the initial and final states).");
+    prm.declare_entry("Monitor points",
+                      "",
+                      Patterns::Anything(),
+                      "Points 'x,y,z; x,y,z; ...' [m]: the displacement of "
+                      "the nearest mesh vertex is written to history.csv "
+                      "and summary.json.");
+    prm.declare_entry("Test output",
+                      "false",
+                      Patterns::Bool(),
+                      "Also write a file 'output' in the working directory "
+                      "with physics-level numbers at fixed precision (used "
+                      "by the regression tests).");
+    prm.leave_subsection();
+  }
+
+  void
+  OutputParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    directory    = prm.get("Directory");
+    write_vtu    = prm.get_bool("Write VTU");
+    vtu_interval = prm.get_integer("VTU interval");
+    test_output  = prm.get_bool("Test output");
+    monitor_points.clear();
+    for (const auto &item :
+         Utilities::split_string_list(prm.get("Monitor points"), ';'))
+      {
+        const auto xyz = Utilities::split_string_list(item, ',');
+        check_input(xyz.size() == 3,
+                    "Output/Monitor points",
+                    "'" + item + "' is not of the form x, y, z");
+        Point<3> p;
+        for (unsigned int d = 0; d < 3; ++d)
+          try
+            {
+              p[d] = Utilities::string_to_double(xyz[d]);
+            }
+          catch (...)
+            {
+              throw InputError("Output/Monitor points",
+                               "'" + xyz[d] + "' is not a number");
+            }
+        monitor_points.push_back(p);
+      }
+    check_input(!directory.empty(), "Output/Directory", "must not be empty");
+    prm.leave_subsection();
+  }
+
+  void
+  Simulator::Impl::prepare_output_directory()
+  {
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        std::error_code ec;
+        std::filesystem::create_directories(output.directory, ec);
+        std::ofstream probe(output.directory + "/history.csv");
+        if (!probe)
+          throw InputError("Output/Directory",
+                           "cannot write into '" + output.directory + "'");
+      }
+    MPI_Barrier(comm);
+    pvd_records.clear();
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        history = std::make_unique<std::ofstream>(output.directory +
+                                                  "/history.csv");
+        *history << "step,time,newton_iterations,wall_seconds";
+        if (geometry.is_closed())
+          *history << ",volume";
+        for (unsigned int m = 0; m < output.monitor_points.size(); ++m)
+          *history << ",m" << m << "_ux,m" << m << "_uy,m" << m << "_uz";
+        *history << "\n";
+      }
+  }
+
+  void
+  Simulator::Impl::locate_monitor_points()
+  {
+    monitor_dofs.clear();
+    monitor_positions.clear();
+    for (const auto &p : output.monitor_points)
+      {
+        double local_min = std::numeric_limits<double>::max();
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const auto v : cell->vertex_indices())
+              local_min = std::min(local_min, cell->vertex(v).distance(p));
+        const double global_min = Utilities::MPI::min(local_min, comm);
+        // The lowest rank that owns a vertex at that distance reports it.
+        std::array<types::global_dof_index, 3> dofs;
+        dofs.fill(numbers::invalid_dof_index);
+        std::array<double, 3> position{{0., 0., 0.}};
+        bool                  found = false;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned() && !found)
+            for (const auto v : cell->vertex_indices())
+              if (cell->vertex(v).distance(p) <= global_min * (1 + 1e-12) &&
+                  locally_owned.is_element(cell->vertex_dof_index(v, 0)))
+                {
+                  for (unsigned int c = 0; c < 3; ++c)
+                    {
+                      dofs[c]     = cell->vertex_dof_index(v, c);
+                      position[c] = cell->vertex(v)[c];
+                    }
+                  found = true;
+                  break;
+                }
+        const unsigned int me = Utilities::MPI::this_mpi_process(comm);
+        const unsigned int reporter =
+          Utilities::MPI::min(found ? me : numbers::invalid_unsigned_int, comm);
+        if (me != reporter)
+          {
+            dofs.fill(numbers::invalid_dof_index);
+            position.fill(0.);
+          }
+        for (unsigned int c = 0; c < 3; ++c)
+          position[c] = Utilities::MPI::sum(position[c], comm);
+        monitor_dofs.push_back(dofs);
+        monitor_positions.push_back(position);
+      }
+  }
+
+  std::vector<std::array<double, 3>>
+  Simulator::Impl::monitor_displacements()
+  {
+    std::vector<std::array<double, 3>> values;
+    for (const auto &dofs : monitor_dofs)
+      {
+        std::array<double, 3> u{{0., 0., 0.}};
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            if (dofs[c] != numbers::invalid_dof_index)
+              u[c] = solution[dofs[c]];
+            u[c] = Utilities::MPI::sum(u[c], comm);
+          }
+        values.push_back(u);
+      }
+    return values;
+  }
+
+  void
+  Simulator::Impl::write_history_row(const unsigned int step,
+                                     const double       t,
+                                     const unsigned int newton_iterations)
+  {
+    ghosted             = solution;
+    const double volume =
+      geometry.is_closed() ? assembler.enclosed_volume(ghosted) : 0.;
+    const auto monitors = monitor_displacements();
+    if (history)
+      {
+        *history << step << ',' << std::setprecision(10) << t << ','
+                 << newton_iterations << ',' << std::setprecision(4)
+                 << wall_clock.wall_time() << std::setprecision(10);
+        if (geometry.is_closed())
+          *history << ',' << volume;
+        for (const auto &u : monitors)
+          *history << ',' << u[0] << ',' << u[1] << ',' << u[2];
+        *history << std::endl;
+      }
+  }
+
+  void
+  Simulator::Impl::write_vtu(const unsigned int step, const double t)
+  {
+    TimerOutput::Scope timer_scope(timer, "output");
+    ghosted = solution;
+    // Never write a non-finite state.
+    AssertThrow(std::isfinite(solution.l2_norm()),
+                ExcMessage("refusing to write a non-finite solution"));
+
+    const postprocess::CellFields fields =
+      postprocess::membrane_cell_fields(*mapping,
+                                        dof_handler,
+                                        materials,
+                                        ghosted);
+    DataOut<2, 3> data_out;
+    data_out.attach_dof_handler(dof_handler);
+    const std::vector<std::string> names(3, "displacement");
+    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      interpretation(3, DataComponentInterpretation::component_is_part_of_vector);
+    data_out.add_data_vector(ghosted,
+                             names,
+                             DataOut<2, 3>::type_dof_data,
+                             interpretation);
+    for (unsigned int i = 0; i < fields.names.size(); ++i)
+      data_out.add_data_vector(fields.values[i],
+                               fields.names[i],
+                               DataOut<2, 3>::type_cell_data);
+    Vector<float> subdomain(triangulation.n_active_cells());
+    subdomain = triangulation.locally_owned_subdomain();
+    data_out.add_data_vector(subdomain, "subdomain");
+    data_out.build_patches(*mapping,
+                           degree,
+                           DataOut<2, 3>::curved_inner_cells);
+    const std::string pvtu = data_out.write_vtu_with_pvtu_record(
+      output.directory + "/", "solution", step, comm, 4);
+    pvd_records.emplace_back(t, pvtu);
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        std::ofstream pvd(output.directory + "/solution.pvd");
+        DataOutBase::write_pvd_record(pvd, pvd_records);
+      }
+  }
+
+  void
+  Simulator::Impl::compute_reactions(std::array<double, 3> &reaction,
+                                     std::array<double, 3> &applied)
+  {
+    // Unconstrained residual: at prescribed dofs it is minus the reaction.
+    AffineConstraints<double> none;
+    none.close();
+    LA::Vector residual(solution), ext(solution);
+    ghosted = solution;
+    membrane::AssemblyRequest request;
+    request.time     = current_time;
+    request.residual = &residual;
+    request.external = &ext;
+    assembler.assemble(ghosted, none, request);
+    reaction.fill(0.);
+    applied.fill(0.);
+    const auto &fe = dof_handler.get_fe();
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    std::vector<bool>                    seen_dummy;
+    (void)seen_dummy;
+    // Component of each owned dof.
+    for (unsigned int c = 0; c < 3; ++c)
+      {
+        std::vector<bool> mask(3, false);
+        mask[c] = true;
+        const IndexSet component_dofs =
+          DoFTools::extract_dofs(dof_handler, ComponentMask(mask));
+        for (const auto i : component_dofs)
+          {
+            applied[c] += ext[i];
+            if (constraints.is_constrained(i) &&
+                constraints.get_constraint_entries(i)->empty())
+              reaction[c] -= residual[i];
+          }
+        reaction[c] = Utilities::MPI::sum(reaction[c], comm);
+        applied[c]  = Utilities::MPI::sum(applied[c], comm);
+      }
+  }
+
+  void
+  Simulator::Impl::write_summary(const RunSummary &summary)
+  {
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      return;
+    std::ofstream json(output.directory + "/summary.json");
+    json << std::setprecision(10);
+    json << "{\n"
+         << "  \"exit_code\": " << summary.exit_code << ",\n"
+         << "  \"message\": \"" << summary.message << "\",\n"
+         << "  \"cells\": " << summary.n_cells << ",\n"
+         << "  \"dofs\": " << summary.n_dofs << ",\n"
+         << "  \"mpi_ranks\": " << Utilities::MPI::n_mpi_processes(comm)
+         << ",\n"
+         << "  \"steps\": " << summary.n_steps << ",\n"
+         << "  \"cutbacks\": " << summary.n_cutbacks << ",\n"
+         << "  \"newton_iterations\": " << summary.n_newton_iterations
+         << ",\n"
+         << "  \"linear_solves\": " << summary.n_linear_solves << ",\n"
+         << "  \"final_time\": " << summary.final_time << ",\n"
+         << "  \"initial_volume\": " << summary.initial_volume << ",\n"
+         << "  \"volume\": " << summary.volume << ",\n"
+         << "  \"reaction\": [" << summary.reaction[0] << ", "
+         << summary.reaction[1] << ", " << summary.reaction[2] << "],\n"
+         << "  \"applied_load\": [" << summary.applied_load[0] << ", "
+         << summary.applied_load[1] << ", " << summary.applied_load[2]
+         << "],\n"
+         << "  \"monitor_points\": [";
+    for (unsigned int m = 0; m < summary.monitor_displacements.size(); ++m)
+      {
+        const auto &x = summary.monitor_positions[m];
+        const auto &u = summary.monitor_displacements[m];
+        json << (m ? ",\n" : "\n") << "    {\"position\": [" << x[0] << ", "
+             << x[1] << ", " << x[2] << "], \"displacement\": [" << u[0]
+             << ", " << u[1] << ", " << u[2] << "]}";
+      }
+    json << "\n  ],\n  \"timings\": {";
+    const auto times = timer.get_summary_data(TimerOutput::total_wall_time);
+    bool first = true;
+    for (const auto &t : times)
+      {
+        json << (first ? "" : ",") << "\n    \"" << t.first
+             << "\": " << t.second;
+        first = false;
+      }
+    json << "\n  },\n  \"wall_seconds\": " << summary.wall_seconds << "\n}\n";
+
+    if (output.test_output)
+      {
+        // Physics-level numbers only (no timings), for numdiff.
+        std::ofstream out("output");
+        out << std::scientific << std::setprecision(4);
+        out << "exit_code " << summary.exit_code << "\n"
+            << "cells " << summary.n_cells << "\n"
+            << "dofs " << summary.n_dofs << "\n"
+            << "final_time " << summary.final_time << "\n";
+        if (geometry.is_closed())
+          out << "volume " << summary.volume << "\n";
+        for (unsigned int m = 0; m < summary.monitor_displacements.size();
+             ++m)
+          {
+            const auto &u = summary.monitor_displacements[m];
+            out << "monitor " << m << " u = " << u[0] << " " << u[1] << " "
+                << u[2] << "\n";
+          }
+      }
+  }
+} // namespace pneuma

@@ -1,0 +1,257 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <pneuma/core/input_error.h>
+#include <pneuma/loads/boundary_conditions.h>
+#include <pneuma/loads/loads.h>
+
+namespace pneuma
+{
+  namespace loads
+  {
+    namespace
+    {
+      std::array<bool, 3>
+      parse_components(const std::string &text, const std::string &path)
+      {
+        std::array<bool, 3> mask = {{false, false, false}};
+        const std::string   t    = Utilities::trim(text);
+        check_input(!t.empty(), path, "no components given (use x, y, z)");
+        for (const char c : t)
+          {
+            check_input(c == 'x' || c == 'y' || c == 'z',
+                        path,
+                        "component '" + std::string(1, c) +
+                          "' is not one of x, y, z");
+            mask[c - 'x'] = true;
+          }
+        return mask;
+      }
+    } // namespace
+
+    BoundaryConditions::BoundaryConditions()
+      : displacement_function(std::make_unique<Functions::ParsedFunction<3>>(3))
+    {}
+
+    void
+    BoundaryConditions::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Boundary conditions");
+      prm.declare_entry("Fixed boundaries",
+                        "",
+                        Patterns::Anything(),
+                        "Clamped edges and symmetry planes: "
+                        "'id: components; ...', e.g. '0: xyz; 2: y'.");
+      prm.declare_entry("Fixed points",
+                        "",
+                        Patterns::Anything(),
+                        "Supports at the mesh vertex nearest to a point [m]: "
+                        "'x, y, z: components; ...', e.g. '0,0,0: xyz'.");
+      prm.declare_entry("Fixed regions",
+                        "",
+                        Patterns::List(Patterns::Integer(0)),
+                        "Material ids whose nodes are all held fixed "
+                        "(rigid, fixed regions such as clamped end plates).");
+      prm.declare_entry("Prescribed displacement boundaries",
+                        "",
+                        Patterns::List(Patterns::Integer(0)),
+                        "Boundary ids whose displacement follows the "
+                        "function 'Prescribed displacement' of (x,y,z,t).");
+      prm.enter_subsection("Prescribed displacement");
+      Functions::ParsedFunction<3>::declare_parameters(prm, 3);
+      prm.set("Function expression", "0; 0; 0");
+      prm.leave_subsection();
+      prm.leave_subsection();
+    }
+
+    void
+    BoundaryConditions::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Boundary conditions");
+      fixed_boundaries.clear();
+      for (const auto &item :
+           Utilities::split_string_list(prm.get("Fixed boundaries"), ';'))
+        {
+          const std::string path = "Boundary conditions/Fixed boundaries";
+          const auto        kv   = Utilities::split_string_list(item, ':');
+          check_input(kv.size() == 2,
+                      path,
+                      "'" + item + "' is not of the form 'id: components'");
+          const auto ids = parse_id_list(kv[0], path);
+          for (const auto id : ids)
+            fixed_boundaries[id] = parse_components(kv[1], path);
+        }
+      fixed_points.clear();
+      for (const auto &item :
+           Utilities::split_string_list(prm.get("Fixed points"), ';'))
+        {
+          const std::string path = "Boundary conditions/Fixed points";
+          const auto        kv   = Utilities::split_string_list(item, ':');
+          check_input(kv.size() == 2,
+                      path,
+                      "'" + item + "' is not of the form 'x, y, z: components'");
+          const auto xyz = Utilities::split_string_list(kv[0], ',');
+          check_input(xyz.size() == 3, path, "'" + kv[0] + "' is not x, y, z");
+          Point<3> p;
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              try
+                {
+                  p[d] = Utilities::string_to_double(xyz[d]);
+                }
+              catch (...)
+                {
+                  throw InputError(path, "'" + xyz[d] + "' is not a number");
+                }
+            }
+          fixed_points.emplace_back(p, parse_components(kv[1], path));
+        }
+      const auto fr = parse_id_list(prm.get("Fixed regions"),
+                                    "Boundary conditions/Fixed regions");
+      fixed_regions = std::set<types::material_id>(fr.begin(), fr.end());
+      const auto db =
+        parse_id_list(prm.get("Prescribed displacement boundaries"),
+                      "Boundary conditions/Prescribed displacement boundaries");
+      displaced_boundaries = std::set<types::boundary_id>(db.begin(), db.end());
+      parse_function(prm,
+                     *displacement_function,
+                     "Prescribed displacement",
+                     "Boundary conditions/Prescribed displacement");
+      prm.leave_subsection();
+    }
+
+    void
+    BoundaryConditions::check_against_mesh(
+      const DoFHandler<2, 3> &dof_handler) const
+    {
+      std::set<unsigned int> boundary_ids, material_ids;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            material_ids.insert(cell->material_id());
+            for (const auto f : cell->face_indices())
+              if (cell->face(f)->at_boundary())
+                boundary_ids.insert(cell->face(f)->boundary_id());
+          }
+      const MPI_Comm comm = dof_handler.get_communicator();
+      auto           all_boundaries =
+        Utilities::MPI::compute_set_union(std::vector<unsigned int>(
+                                            boundary_ids.begin(),
+                                            boundary_ids.end()),
+                                          comm);
+      auto all_materials = Utilities::MPI::compute_set_union(
+        std::vector<unsigned int>(material_ids.begin(), material_ids.end()),
+        comm);
+      const std::set<unsigned int> b(all_boundaries.begin(),
+                                     all_boundaries.end());
+      const std::set<unsigned int> m(all_materials.begin(),
+                                     all_materials.end());
+      for (const auto &fb : fixed_boundaries)
+        check_input(b.count(fb.first),
+                    "Boundary conditions/Fixed boundaries",
+                    "the mesh has no boundary with id " +
+                      std::to_string(fb.first));
+      for (const auto id : displaced_boundaries)
+        check_input(b.count(id),
+                    "Boundary conditions/Prescribed displacement boundaries",
+                    "the mesh has no boundary with id " + std::to_string(id));
+      for (const auto id : fixed_regions)
+        check_input(m.count(id),
+                    "Boundary conditions/Fixed regions",
+                    "the mesh has no cells in region " + std::to_string(id));
+    }
+
+    std::map<types::global_dof_index, double>
+    BoundaryConditions::prescribed_dofs(const Mapping<2, 3> &   mapping,
+                                        const DoFHandler<2, 3> &dof_handler,
+                                        const double            t) const
+    {
+      std::map<types::global_dof_index, double> values;
+      const Functions::ZeroFunction<3>          zero(3);
+
+      for (const auto &fb : fixed_boundaries)
+        {
+          const ComponentMask mask(
+            std::vector<bool>(fb.second.begin(), fb.second.end()));
+          VectorTools::interpolate_boundary_values(
+            mapping, dof_handler, fb.first, zero, values, mask);
+        }
+      if (!displaced_boundaries.empty())
+        {
+          displacement_function->set_time(t);
+          std::map<types::boundary_id, const Function<3> *> functions;
+          for (const auto id : displaced_boundaries)
+            functions[id] = displacement_function.get();
+          VectorTools::interpolate_boundary_values(mapping,
+                                                   dof_handler,
+                                                   functions,
+                                                   values);
+        }
+
+      std::vector<types::global_dof_index> dofs;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (!cell->is_artificial() && fixed_regions.count(cell->material_id()))
+          {
+            dofs.resize(cell->get_fe().n_dofs_per_cell());
+            cell->get_dof_indices(dofs);
+            for (const auto d : dofs)
+              values[d] = 0.;
+          }
+
+      // Point supports: the nearest vertex over all ranks.
+      for (const auto &fp : fixed_points)
+        {
+          double local_min = std::numeric_limits<double>::max();
+          for (const auto &cell : dof_handler.active_cell_iterators())
+            if (!cell->is_artificial())
+              for (const auto v : cell->vertex_indices())
+                local_min =
+                  std::min(local_min, cell->vertex(v).distance(fp.first));
+          const double global_min =
+            Utilities::MPI::min(local_min, dof_handler.get_communicator());
+          for (const auto &cell : dof_handler.active_cell_iterators())
+            if (!cell->is_artificial())
+              for (const auto v : cell->vertex_indices())
+                if (cell->vertex(v).distance(fp.first) <=
+                    global_min * (1. + 1e-12) + 1e-14)
+                  for (unsigned int c = 0; c < 3; ++c)
+                    if (fp.second[c])
+                      values[cell->vertex_dof_index(v, c)] = 0.;
+        }
+      return values;
+    }
+
+    void
+    BoundaryConditions::add_update_constraints(
+      const DoFHandler<2, 3> &   dof_handler,
+      AffineConstraints<double> &constraints) const
+    {
+      // The mapping does not matter for homogeneous values.
+      const auto values =
+        prescribed_dofs(StaticMappingQ1<2, 3>::mapping, dof_handler, 0.);
+      for (const auto &v : values)
+        if (constraints.can_store_line(v.first) &&
+            !constraints.is_constrained(v.first))
+          {
+            constraints.add_line(v.first);
+          }
+    }
+
+    void
+    BoundaryConditions::set_prescribed_values(
+      const Mapping<2, 3> &   mapping,
+      const DoFHandler<2, 3> &dof_handler,
+      const double            t,
+      LA::Vector &            solution) const
+    {
+      const auto values = prescribed_dofs(mapping, dof_handler, t);
+      for (const auto &v : values)
+        if (solution.locally_owned_elements().is_element(v.first))
+          solution[v.first] = v.second;
+      solution.compress(VectorOperation::insert);
+    }
+  } // namespace loads
+} // namespace pneuma

@@ -1,0 +1,113 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <pneuma/membrane/surface_kinematics.h>
+#include <pneuma/postprocess/membrane_fields.h>
+
+namespace pneuma
+{
+  namespace postprocess
+  {
+    CellFields
+    membrane_cell_fields(const Mapping<2, 3> &             mapping,
+                         const DoFHandler<2, 3> &          dof_handler,
+                         const membrane::MaterialRegions & materials,
+                         const LA::Vector &                u)
+    {
+      CellFields f;
+      f.names = {"membrane_force_xx",
+                 "membrane_force_yy",
+                 "membrane_force_zz",
+                 "membrane_force_xy",
+                 "membrane_force_xz",
+                 "membrane_force_yz",
+                 "N1",
+                 "N2",
+                 "N1_direction_x",
+                 "N1_direction_y",
+                 "N1_direction_z",
+                 "N2_direction_x",
+                 "N2_direction_y",
+                 "N2_direction_z",
+                 "E1",
+                 "E2",
+                 "thickness_stretch",
+                 "material_region"};
+      const unsigned int n_cells =
+        dof_handler.get_triangulation().n_active_cells();
+      f.values.assign(f.names.size(), Vector<double>(n_cells));
+
+      const unsigned int degree = dof_handler.get_fe().degree;
+      const QGauss<2>    quadrature(degree + 1);
+      FEValues<2, 3>     fe_values(mapping,
+                               dof_handler.get_fe(),
+                               quadrature,
+                               update_gradients | update_normal_vectors |
+                                 update_JxW_values);
+      const FEValuesExtractors::Vector displacement(0);
+      std::vector<Tensor<2, 3>>        grad_u(quadrature.size());
+
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fe_values.reinit(cell);
+            fe_values[displacement].get_function_gradients(u, grad_u);
+            const auto &material = materials[cell->material_id()];
+            SymmetricTensor<2, 3> n_avg;
+            SymmetricTensor<2, 2> E_avg;
+            Tensor<1, 3>          normal_avg;
+            double                l3 = 0., area = 0.;
+            for (unsigned int q = 0; q < quadrature.size(); ++q)
+              {
+                const auto frame =
+                  membrane::tangent_frame(fe_values.normal_vector(q));
+                const auto a = membrane::deformed_tangents(frame, grad_u[q]);
+                const auto C = membrane::right_cauchy_green(a);
+                SymmetricTensor<2, 2> S;
+                SymmetricTensor<4, 2> D;
+                material.law->evaluate(C, S, D);
+                const double w = fe_values.JxW(q);
+                n_avg += w * membrane::membrane_forces(a, S, material.thickness);
+                E_avg += w * 0.5 * (C - unit_symmetric_tensor<2>());
+                l3 += w * material.law->thickness_stretch(C);
+                normal_avg += w * cross_product_3d(a[0], a[1]);
+                area += w;
+              }
+            n_avg /= area;
+            E_avg /= area;
+            l3 /= area;
+            const unsigned int k = cell->active_cell_index();
+            f.values[0][k]       = n_avg[0][0];
+            f.values[1][k]       = n_avg[1][1];
+            f.values[2][k]       = n_avg[2][2];
+            f.values[3][k]       = n_avg[0][1];
+            f.values[4][k]       = n_avg[0][2];
+            f.values[5][k]       = n_avg[1][2];
+            // In-plane principal forces: drop the eigenvector along the
+            // current normal.
+            const auto   eig = eigenvectors(n_avg);
+            unsigned int kn  = 0;
+            for (unsigned int e = 1; e < 3; ++e)
+              if (std::abs(eig[e].second * normal_avg) >
+                  std::abs(eig[kn].second * normal_avg))
+                kn = e;
+            const unsigned int k1 = (kn == 0) ? 1 : 0;
+            const unsigned int k2 = (kn == 2) ? 1 : 2;
+            f.values[6][k]        = eig[k1].first;
+            f.values[7][k]        = eig[k2].first;
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                f.values[8 + d][k]  = eig[k1].second[d];
+                f.values[11 + d][k] = eig[k2].second[d];
+              }
+            const auto e   = eigenvalues(E_avg);
+            f.values[14][k] = e[0];
+            f.values[15][k] = e[1];
+            f.values[16][k] = l3;
+            f.values[17][k] = cell->material_id();
+          }
+      return f;
+    }
+  } // namespace postprocess
+} // namespace pneuma
