@@ -46,6 +46,7 @@ namespace pneuma
     membrane::MaterialRegions::declare_parameters(prm);
     loads::Loads::declare_parameters(prm);
     loads::BoundaryConditions::declare_parameters(prm);
+    loads::RigidRegions::declare_parameters(prm);
     solvers::LoadStepping::declare_parameters(prm);
     solvers::NewtonSolver::declare_parameters(prm);
     solvers::LinearSolver::declare_parameters(prm);
@@ -63,6 +64,7 @@ namespace pneuma
     s.materials.parse_parameters(prm);
     s.loads.parse_parameters(prm);
     s.boundary_conditions.parse_parameters(prm);
+    s.rigid_regions.parse_parameters(prm);
     s.stepping.parse_parameters(prm);
     s.newton.parse_parameters(prm);
     s.linear_solver.parse_parameters(prm);
@@ -107,6 +109,11 @@ namespace pneuma
     dof_handler.distribute_dofs(*fe);
     locally_owned    = dof_handler.locally_owned_dofs();
     locally_relevant = DoFTools::extract_locally_relevant_dofs(dof_handler);
+    // Rigid plates couple every plate dof to three master nodes, which
+    // every rank must see.
+    if (!rigid_regions.empty())
+      locally_relevant.add_indices(
+        rigid_regions.master_dofs(*mapping, dof_handler));
     make_constraints();
 
     DynamicSparsityPattern dsp(locally_relevant);
@@ -147,7 +154,10 @@ namespace pneuma
     constraints.clear();
     constraints.reinit(locally_relevant);
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
-    boundary_conditions.add_update_constraints(dof_handler, constraints);
+    rigid_regions.add_constraints(*mapping, dof_handler, constraints);
+    boundary_conditions.add_update_constraints(dof_handler,
+                                               rigid_regions.slave_dofs(),
+                                               constraints);
     constraints.close();
   }
 
@@ -193,6 +203,12 @@ namespace pneuma
     k_sum = Utilities::MPI::sum(k_sum, comm);
     m_sum = Utilities::MPI::sum(m_sum, comm);
     return m_sum > 0. ? k_sum / m_sum : 0.;
+  }
+
+  void
+  Simulator::Impl::laplacian_vmult(const LA::Vector &x, LA::Vector &y)
+  {
+    laplacian.vmult(y, x);
   }
 
   double

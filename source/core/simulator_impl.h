@@ -15,6 +15,7 @@
 #include <pneuma/geometry/scene_generator.h>
 #include <pneuma/loads/boundary_conditions.h>
 #include <pneuma/loads/loads.h>
+#include <pneuma/loads/rigid_regions.h>
 #include <pneuma/membrane/constitutive_law.h>
 #include <pneuma/membrane/membrane_assembler.h>
 #include <pneuma/solvers/linear_solver.h>
@@ -65,6 +66,8 @@ namespace pneuma
     shift_scale() override;
     double
     load_norm() override;
+    void
+    laplacian_vmult(const LA::Vector &x, LA::Vector &y) override;
 
     // --- run (simulator.cc)
     RunSummary
@@ -99,6 +102,7 @@ namespace pneuma
     membrane::MaterialRegions     materials;
     loads::Loads                  loads;
     loads::BoundaryConditions     boundary_conditions;
+    loads::RigidRegions           rigid_regions;
     solvers::NewtonSolver         newton;
     solvers::LinearSolver         linear_solver;
     solvers::LoadStepping         stepping;

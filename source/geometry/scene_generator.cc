@@ -180,16 +180,15 @@ namespace pneuma
                       "'" + mesh_file + "' has no surface cells");
         }
 
-      // Material ids of the closed cylinder: hull 0, caps 1.
+      // Material ids of the closed cylinder: hull 0, cap at x = 0 is 1,
+      // cap at x = L is 2.
       if (geometry_type == "closed cylinder")
         for (const auto &cell : coarse.active_cell_iterators())
           {
             const double xc = cell->center()[0];
-            cell->set_material_id(
-              (std::abs(xc) < 1e-8 * length ||
-               std::abs(xc - length) < 1e-8 * length) ?
-                1 :
-                0);
+            cell->set_material_id(std::abs(xc) < 1e-8 * length ? 1 :
+                                  std::abs(xc - length) < 1e-8 * length ? 2 :
+                                                                          0);
           }
       else if (geometry_type != "gmsh")
         for (const auto &cell : coarse.active_cell_iterators())

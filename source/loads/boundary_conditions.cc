@@ -226,18 +226,28 @@ namespace pneuma
 
     void
     BoundaryConditions::add_update_constraints(
-      const DoFHandler<2, 3> &   dof_handler,
-      AffineConstraints<double> &constraints) const
+      const DoFHandler<2, 3> &                 dof_handler,
+      const std::set<types::global_dof_index> &rigid_slaves,
+      AffineConstraints<double> &              constraints) const
     {
       // The mapping does not matter for homogeneous values.
       const auto values =
         prescribed_dofs(StaticMappingQ1<2, 3>::mapping, dof_handler, 0.);
+      bool conflict = false;
       for (const auto &v : values)
-        if (constraints.can_store_line(v.first) &&
-            !constraints.is_constrained(v.first))
-          {
+        {
+          if (rigid_slaves.count(v.first))
+            conflict = true;
+          else if (constraints.can_store_line(v.first) &&
+                   !constraints.is_constrained(v.first))
             constraints.add_line(v.first);
-          }
+        }
+      check_input(!Utilities::MPI::logical_or(conflict,
+                                              dof_handler.get_communicator()),
+                  "Boundary conditions",
+                  "a fixed point, boundary or region lies inside a rigid "
+                  "region; support a rigid plate at its reference node (the "
+                  "vertex nearest its centroid)");
     }
 
     void

@@ -60,131 +60,165 @@ namespace pneuma
       prm.leave_subsection();
     }
 
+    bool
+    NewtonSolver::iterate(NonlinearProblem &        problem,
+                          LA::Vector &              u,
+                          const double              shift,
+                          const LA::Vector &        u_anchor,
+                          const unsigned int        max_iterations,
+                          const double              tolerance,
+                          const double              r_ref,
+                          const ConditionalOStream &out,
+                          NewtonResult &            result) const
+    {
+      LA::Vector residual(u), trial(u), du(u), u_trial(u), Lx(u);
+      // r_s(u) = r(u) + s L (u - u_anchor): the regularised residual.
+      const auto evaluate = [&](const LA::Vector &x, LA::Vector &r) {
+        problem.assemble(x, r);
+        if (shift > 0.)
+          {
+            du = x;
+            du -= u_anchor;
+            problem.laplacian_vmult(du, Lx);
+            r.add(shift, Lx);
+          }
+        return r.l2_norm();
+      };
+      double r_norm = evaluate(u, residual);
+      for (unsigned int it = 0;; ++it)
+        {
+          if (!std::isfinite(r_norm))
+            {
+              result.failure_reason = "residual is not finite";
+              return false;
+            }
+          if (r_norm <= tolerance * r_ref && (it > 0 || shift > 0.))
+            return true;
+          if (it >= max_iterations)
+            {
+              result.failure_reason = "no convergence in " +
+                                      std::to_string(max_iterations) +
+                                      " iterations";
+              return false;
+            }
+          du = 0.;
+          residual *= -1.;
+          try
+            {
+              problem.solve_linear(shift, residual, du);
+            }
+          catch (const std::exception &e)
+            {
+              result.failure_reason = "linear solver failed";
+              return false;
+            }
+          ++result.iterations;
+          const double du_norm = du.l2_norm();
+          if (!std::isfinite(du_norm))
+            {
+              result.failure_reason = "linear solver failed";
+              return false;
+            }
+          LA::Vector step(du);
+          double     alpha      = 1.;
+          double     trial_norm = 0.;
+          bool       accepted   = false;
+          for (unsigned int ls = 0; ls <= (line_search ? max_line_search : 0);
+               ++ls, alpha *= 0.5)
+            {
+              u_trial = u;
+              u_trial.add(alpha, step);
+              trial_norm = evaluate(u_trial, trial);
+              if (!line_search ||
+                  (std::isfinite(trial_norm) &&
+                   (trial_norm <= (1. - 1e-4 * alpha) * r_norm ||
+                    trial_norm <= tolerance * r_ref)))
+                {
+                  accepted = true;
+                  break;
+                }
+            }
+          if (print_table)
+            out << "    " << std::setw(4) << result.iterations << std::scientific
+                << std::setprecision(3) << "  " << trial_norm / r_ref << "  "
+                << alpha * du_norm / std::max(u_trial.l2_norm(), 1e-300)
+                << "  " << shift << "  " << std::defaultfloat
+                << std::setprecision(3) << (accepted ? alpha : 0.)
+                << std::endl;
+          if (!accepted)
+            {
+              result.failure_reason = "line search failed";
+              return false;
+            }
+          u        = u_trial;
+          residual = trial;
+          r_norm   = trial_norm;
+          if (shift == 0.)
+            result.residual_history.push_back(r_norm);
+        }
+    }
+
     NewtonResult
     NewtonSolver::solve(NonlinearProblem &        problem,
                         LA::Vector &              u,
                         const ConditionalOStream &out) const
     {
       NewtonResult result;
-      LA::Vector   residual(u), trial_residual(u), du(u), u_trial(u);
-      problem.assemble(u, residual);
-      double       r_norm = residual.l2_norm();
-      const double r_ref  = std::max(r_norm, problem.load_norm());
-      // Levenberg-Marquardt shift: zero (pure Newton) until a step fails.
-      double       shift       = 0.;
-      double       shift_unit  = 0.;
-      bool         tangent_at_u = true;
-
+      LA::Vector   r(u);
+      problem.assemble(u, r);
+      const double r0    = r.l2_norm();
+      const double r_ref = std::max(r0, problem.load_norm());
+      result.residual_history.push_back(r0);
+      if (r_ref == 0.)
+        {
+          result.converged = true;
+          return result;
+        }
       if (print_table)
         out << "      it  |r|/|r_ref|   |du|/|u|    shift     step\n";
 
-      unsigned int solves = 0;
-      result.residual_history.push_back(r_norm);
-      while (true)
+      // 1. Pure Newton with backtracking.
+      const LA::Vector u_start(u);
+      if (iterate(problem, u, 0., u, max_iter, residual_tolerance, r_ref, out,
+                  result))
         {
-          if (!std::isfinite(r_norm))
-            {
-              result.failure_reason = "residual is not finite";
-              break;
-            }
-          if (r_ref == 0. || (solves > 0 && r_norm <= residual_tolerance * r_ref))
-            {
-              result.converged = true;
-              break;
-            }
-          if (solves >= max_iter)
-            {
-              result.failure_reason =
-                "no convergence in " + std::to_string(max_iter) + " iterations";
-              break;
-            }
-          if (!tangent_at_u)
-            {
-              problem.assemble(u, residual);
-              tangent_at_u = true;
-            }
-          if (shift_unit == 0.)
-            shift_unit = problem.shift_scale();
-
-          du = 0.;
-          residual *= -1.;
-          bool solved = true;
-          try
-            {
-              problem.solve_linear(shift * shift_unit, residual, du);
-            }
-          catch (...)
-            {
-              solved = false;
-            }
-          residual *= -1.;
-          ++solves;
-          const double du_norm = du.l2_norm();
-          solved               = solved && std::isfinite(du_norm);
-
-          // Pure Newton: the full step, then shorter ones (Armijo).
-          // Regularised (pseudo-transient) steps are always taken.
-          double alpha      = 1.;
-          double trial_norm = std::numeric_limits<double>::infinity();
-          bool   accepted   = false;
-          const unsigned int n_trials =
-            (line_search && shift == 0.) ? max_line_search + 1 : 1;
-          for (unsigned int ls = 0; solved && ls < n_trials; ++ls)
-            {
-              u_trial = u;
-              u_trial.add(alpha, du);
-              problem.assemble(u_trial, trial_residual);
-              trial_norm = trial_residual.l2_norm();
-              if (!std::isfinite(trial_norm))
-                break;
-              if (shift > 0. || !line_search ||
-                  trial_norm <= (1. - 1e-4 * alpha) * r_norm ||
-                  trial_norm <= residual_tolerance * r_ref)
-                {
-                  accepted = true;
-                  break;
-                }
-              alpha *= 0.5;
-            }
-
-          if (print_table)
-            out << "    " << std::setw(4) << solves - 1 << std::scientific
-                << std::setprecision(3) << "  " << trial_norm / r_ref << "  "
-                << alpha * du_norm / std::max(u_trial.l2_norm(), 1e-300)
-                << "  " << shift << "  " << std::defaultfloat
-                << std::setprecision(3) << (accepted ? alpha : 0.)
-                << std::endl;
-
-          if (accepted)
-            {
-              // Switched evolution relaxation: the shift follows the
-              // residual, and is dropped once it is small.
-              if (shift > 0.)
-                {
-                  shift *= std::min(std::max(trial_norm / r_norm, 0.1), 4.);
-                  if (shift < 1e-8 * shift_factor)
-                    shift = 0.;
-                }
-              u        = u_trial;
-              residual = trial_residual;
-              r_norm   = trial_norm;
-              result.residual_history.push_back(r_norm);
-              tangent_at_u = true;
-            }
-          else
-            {
-              // Regularise: the tangent now sits at the trial point.
-              tangent_at_u = false;
-              if (shift_factor == 0.)
-                {
-                  result.failure_reason = solved ? "line search failed" :
-                                                   "linear solver failed";
-                  break;
-                }
-              shift = (shift == 0.) ? shift_factor : 4. * shift;
-            }
+          result.converged = true;
+          return result;
         }
-      result.iterations = solves;
+      if (shift_factor == 0. || result.iterations >= max_iter)
+        return result;
+
+      // 2. Continuation in pseudo time: implicit steps of the Laplacian
+      //    flow r(u) + s L (u - u_prev) = 0, with s shrinking to zero.
+      if (print_table)
+        out << "    (" << result.failure_reason
+            << ": continuing with the regularised iteration)\n";
+      u = u_start;
+      result.residual_history.assign(1, r0);
+      problem.assemble(u, r); // the scale is taken from K at the start
+      const double unit    = problem.shift_scale();
+      double       shift   = shift_factor * unit;
+      LA::Vector   u_prev(u);
+      while (result.iterations < 4 * max_iter)
+        {
+          u_prev = u;
+          if (!iterate(problem, u, shift, u_prev, 6, 1e-3, r_ref, out, result))
+            {
+              u = u_prev;
+              shift *= 3.;
+              continue;
+            }
+          problem.assemble(u, r);
+          if (r.l2_norm() <= 1e-2 * r_ref || shift < 1e-6 * shift_factor * unit)
+            break;
+          shift *= 0.5;
+        }
+
+      // 3. Pure Newton to full accuracy from there.
+      result.residual_history.assign(1, r.l2_norm());
+      result.failure_reason.clear();
+      result.converged = iterate(problem, u, 0., u, max_iter, residual_tolerance,
+                                 r_ref, out, result);
       return result;
     }
   } // namespace solvers

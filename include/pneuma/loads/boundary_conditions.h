@@ -45,8 +45,10 @@ namespace pneuma
        * zero on every prescribed component) to @p constraints.
        */
       void
-      add_update_constraints(const DoFHandler<2, 3> &   dof_handler,
-                             AffineConstraints<double> &constraints) const;
+      add_update_constraints(
+        const DoFHandler<2, 3> &                 dof_handler,
+        const std::set<types::global_dof_index> &rigid_slaves,
+        AffineConstraints<double> &              constraints) const;
 
       /**
        * Write the prescribed values at pseudo time @p t into the owned

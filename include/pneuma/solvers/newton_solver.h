@@ -5,17 +5,16 @@
  * Newton-Raphson for one load step (step-44 style), with a backtracking
  * line search and a Levenberg-Marquardt safeguard.
  *
- * A step is accepted when it reduces the residual norm (Armijo). When the
- * full Newton step and its backtracking fail, the iteration matrix is
- * regularised, \f$(K + s\,L)\,\Delta u = -r\f$, with the vector surface
+ * A step is accepted when it reduces the residual norm (Armijo). When pure
+ * Newton fails (a flat, unstressed membrane has no out-of-plane stiffness),
+ * the step continues in pseudo time: a sequence of implicit steps
+ * \f$r(u_{k+1}) + s_k L\,(u_{k+1} - u_k) = 0\f$ with the vector surface
  * Laplacian \f$L_{ij} = \int \nabla_S N_i\cdot\nabla_S N_j\,dA\f$ (the
- * geometric stiffness of a unit isotropic prestress) scaled by
- * \f$\bar K/\bar L\f$; s grows by 4 after each rejected step and shrinks by
- * 10 after each accepted one, down to zero. Only the iteration matrix
- * changes, never the residual: the converged state is the exact
- * equilibrium and the final iterations are pure Newton, so the rate stays
- * quadratic. This lets a flat, unstressed membrane (no out-of-plane
- * stiffness) take its first steps.
+ * geometric stiffness of a unit isotropic prestress), scaled by
+ * \f$\bar K/\bar L\f$. Each is well posed; s shrinks by 4 after each
+ * success and grows by 4 after a failure. When |r| has dropped, pure Newton
+ * finishes the step: the regularisation is gone at convergence, so the
+ * converged state is the exact equilibrium and the final rate quadratic.
  */
 
 #include <deal.II/base/conditional_ostream.h>
@@ -46,6 +45,9 @@ namespace pneuma
       /// dimensionless.
       virtual double
       shift_scale() = 0;
+      /// y = L x with the regularisation matrix L.
+      virtual void
+      laplacian_vmult(const LA::Vector &x, LA::Vector &y) = 0;
       /// Norm of the external load vector, for the residual reference.
       virtual double
       load_norm() = 0;
@@ -82,6 +84,18 @@ namespace pneuma
       }
 
     private:
+      /// Newton on r(u) + shift L (u - u_anchor) = 0 to |r_s| <= tol r_ref.
+      bool
+      iterate(NonlinearProblem &        problem,
+              LA::Vector &              u,
+              const double              shift,
+              const LA::Vector &        u_anchor,
+              const unsigned int        max_iterations,
+              const double              tolerance,
+              const double              r_ref,
+              const ConditionalOStream &out,
+              NewtonResult &            result) const;
+
       unsigned int max_iter             = 25;
       double       residual_tolerance   = 1e-9;
       double       update_tolerance     = 1e-8;
