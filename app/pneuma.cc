@@ -92,50 +92,57 @@ main(int argc, char **argv)
       return pneuma::bad_input;
     }
 
+  int exit_code = pneuma::success;
   try
     {
       dealii::ParameterHandler prm;
       pneuma::read_parameters(prm, file, overrides);
+      // The simulator is destroyed only after its errors are handled, so
+      // no destructor ever runs with an exception in flight.
       pneuma::Simulator simulator(comm);
-      simulator.parse_parameters(prm);
-      simulator.setup();
-      {
-        // Keep a copy of the parameters as used.
-        prm.enter_subsection("Output");
-        const std::string dir = prm.get("Directory");
-        prm.leave_subsection();
-        if (root)
-          {
-            std::filesystem::create_directories(dir);
-            std::ofstream copy(dir + "/parameters.prm");
-            prm.print_parameters(copy, dealii::ParameterHandler::ShortText);
-          }
-      }
-      const pneuma::RunSummary summary = simulator.run();
-      if (summary.exit_code != pneuma::success)
+      try
+        {
+          simulator.parse_parameters(prm);
+          simulator.setup();
+          // Keep a copy of the parameters as used.
+          prm.enter_subsection("Output");
+          const std::string dir = prm.get("Directory");
+          prm.leave_subsection();
+          if (root)
+            {
+              std::filesystem::create_directories(dir);
+              std::ofstream copy(dir + "/parameters.prm");
+              prm.print_parameters(copy, dealii::ParameterHandler::ShortText);
+            }
+          const pneuma::RunSummary summary = simulator.run();
+          exit_code                        = summary.exit_code;
+          if (root && exit_code != pneuma::success)
+            std::cerr << "pneuma: " << summary.message << std::endl;
+          else if (root)
+            std::cout << "pneuma: finished, " << summary.n_steps
+                      << " steps, " << summary.n_newton_iterations
+                      << " Newton iterations, " << summary.wall_seconds
+                      << " s" << std::endl;
+        }
+      catch (const pneuma::InputError &e)
         {
           if (root)
-            std::cerr << "pneuma: " << summary.message << std::endl;
-          return summary.exit_code;
+            std::cerr << "pneuma: error in " << e.what() << std::endl;
+          exit_code = pneuma::bad_input;
         }
-      if (root)
-        std::cout << "pneuma: finished, " << summary.n_steps << " steps, "
-                  << summary.n_newton_iterations << " Newton iterations, "
-                  << summary.wall_seconds << " s" << std::endl;
-      return pneuma::success;
     }
   catch (const pneuma::InputError &e)
     {
       if (root)
         std::cerr << "pneuma: error in " << e.what() << std::endl;
-      return pneuma::bad_input;
+      exit_code = pneuma::bad_input;
     }
   catch (const std::exception &e)
     {
       std::cerr << "pneuma (rank "
                 << dealii::Utilities::MPI::this_mpi_process(comm)
-                << "): " << e.what() << std::endl;
+                << "): internal error: " << e.what() << std::endl;
       MPI_Abort(comm, 3);
     }
-  return 3;
+  return exit_code;
 }

@@ -69,6 +69,8 @@ namespace pneuma
     s.newton.parse_parameters(prm);
     s.linear_solver.parse_parameters(prm);
     s.output.parse_parameters(prm);
+    if (s.output.quiet)
+      s.pcout.set_condition(false);
   }
 
   // ------------------------------------------------------------------
@@ -146,6 +148,7 @@ namespace pneuma
           modes[c][k] = dofs.is_element(locally_owned.nth_index_in_set(k));
       }
     linear_solver.set_constant_modes(modes);
+    linear_solver.reset();
   }
 
   void
@@ -273,8 +276,21 @@ namespace pneuma
                                                   solution);
         pcout << "Step " << step + 1 << "  t = " << t_new << "  dt = "
               << t_new - t_old << std::endl;
-        const auto result = newton.solve(*this, solution, pcout);
+        auto result = newton.solve(*this,
+                                   solution,
+                                   pcout,
+                                   last_converged.linfty_norm() == 0.);
         summary.n_newton_iterations += result.iterations;
+        // A closed surface must keep a positive enclosed volume.
+        if (result.converged && geometry.is_closed())
+          {
+            ghosted = solution;
+            if (assembler.enclosed_volume(ghosted) <= 0.)
+              {
+                result.converged      = false;
+                result.failure_reason = "the surface turned inside out";
+              }
+          }
 
         if (!result.converged)
           {

@@ -36,6 +36,7 @@ namespace pneuma
     unsigned int          vtu_interval = 1;
     bool                  write_vtu    = true;
     bool                  test_output  = false;
+    bool                  quiet        = false;
     std::vector<Point<3>> monitor_points;
 
     static void
@@ -48,6 +49,11 @@ namespace pneuma
   {
   public:
     explicit Impl(const MPI_Comm comm);
+    /// The direct solver refers to the tangent: release it first.
+    ~Impl() override
+    {
+      linear_solver.reset();
+    }
 
     // --- setup (simulator.cc)
     void

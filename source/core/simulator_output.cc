@@ -36,6 +36,10 @@ namespace pneuma
                       "Points 'x,y,z; x,y,z; ...' [m]: the displacement of "
                       "the nearest mesh vertex is written to history.csv "
                       "and summary.json.");
+    prm.declare_entry("Quiet",
+                      "false",
+                      Patterns::Bool(),
+                      "Print nothing while running (tests, scripted studies).");
     prm.declare_entry("Test output",
                       "false",
                       Patterns::Bool(),
@@ -53,6 +57,7 @@ namespace pneuma
     write_vtu    = prm.get_bool("Write VTU");
     vtu_interval = prm.get_integer("VTU interval");
     test_output  = prm.get_bool("Test output");
+    quiet        = prm.get_bool("Quiet");
     monitor_points.clear();
     for (const auto &item :
          Utilities::split_string_list(prm.get("Monitor points"), ';'))

@@ -1,6 +1,9 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/vector.h>
 
+#include <iostream>
+#include <sstream>
+
 #include <pneuma/core/input_error.h>
 #include <pneuma/loads/loads.h>
 
@@ -53,6 +56,20 @@ namespace pneuma
     {
       prm.enter_subsection(name);
       const std::string expression = prm.get("Function expression");
+      // The parser reports errors on the standard streams itself: keep
+      // them quiet, the one message is ours.
+      std::ostringstream sink;
+      auto *const        out_buf = std::cout.rdbuf(sink.rdbuf());
+      auto *const        err_buf = std::cerr.rdbuf(sink.rdbuf());
+      struct Restore
+      {
+        std::streambuf *o, *e;
+        ~Restore()
+        {
+          std::cout.rdbuf(o);
+          std::cerr.rdbuf(e);
+        }
+      } restore{out_buf, err_buf};
       try
         {
           function.parse_parameters(prm);

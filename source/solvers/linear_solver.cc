@@ -3,6 +3,11 @@
 
 #include <pneuma/solvers/linear_solver.h>
 
+#include <Amesos.h>
+#include <Amesos_BaseSolver.h>
+#include <Amesos_Mumps.h>
+#include <Epetra_LinearProblem.h>
+
 namespace pneuma
 {
   namespace solvers
@@ -21,6 +26,11 @@ namespace pneuma
                         "Amesos_Mumps",
                         Patterns::Selection("Amesos_Mumps|Amesos_Klu"),
                         "Package of the direct solver.");
+      prm.declare_entry("MUMPS ordering",
+                        "metis",
+                        Patterns::Selection("metis|amd|auto"),
+                        "Fill-reducing ordering of MUMPS (ICNTL(7)): nested "
+                        "dissection (metis) suits surface meshes best.");
       prm.declare_entry("Relative tolerance",
                         "1e-10",
                         Patterns::Double(1e-16, 1.),
@@ -38,9 +48,21 @@ namespace pneuma
       prm.enter_subsection("Linear solver");
       solver_type        = prm.get("Type");
       direct_package     = prm.get("Direct solver package");
+      ordering           = prm.get("MUMPS ordering");
       relative_tolerance = prm.get_double("Relative tolerance");
       max_iterations     = prm.get_integer("Maximum iterations");
       prm.leave_subsection();
+    }
+
+    LinearSolver::LinearSolver() = default;
+    LinearSolver::~LinearSolver() = default;
+
+    void
+    LinearSolver::reset()
+    {
+      direct.reset();
+      problem.reset();
+      factored_matrix = nullptr;
     }
 
     void
@@ -57,11 +79,32 @@ namespace pneuma
     {
       if (solver_type == "direct")
         {
-          SolverControl                    control(1, 0);
-          TrilinosWrappers::SolverDirect::AdditionalData data(false,
-                                                              direct_package);
-          TrilinosWrappers::SolverDirect   solver(control, data);
-          solver.solve(A, x, b);
+          if (factored_matrix != &A.trilinos_matrix() || !direct)
+            {
+              problem = std::make_unique<Epetra_LinearProblem>();
+              problem->SetOperator(
+                const_cast<Epetra_CrsMatrix *>(&A.trilinos_matrix()));
+              Amesos factory;
+              direct.reset(factory.Create(direct_package.c_str(), *problem));
+              AssertThrow(direct != nullptr,
+                          ExcMessage("Amesos solver " + direct_package +
+                                     " is not available"));
+              if (auto *mumps = dynamic_cast<Amesos_Mumps *>(direct.get()))
+                mumps->SetICNTL(7,
+                                ordering == "metis" ? 5 :
+                                ordering == "amd"   ? 0 :
+                                                      7);
+              AssertThrow(direct->SymbolicFactorization() == 0,
+                          ExcMessage("symbolic factorization failed"));
+              factored_matrix = &A.trilinos_matrix();
+            }
+          problem->SetLHS(&x.trilinos_vector());
+          problem->SetRHS(const_cast<Epetra_MultiVector *>(
+            static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));
+          AssertThrow(direct->NumericFactorization() == 0,
+                      ExcMessage("numeric factorization failed (singular "
+                                 "tangent)"));
+          AssertThrow(direct->Solve() == 0, ExcMessage("direct solve failed"));
           return 0;
         }
 

@@ -12,8 +12,12 @@
 
 #include <pneuma/core/linear_algebra.h>
 
+#include <memory>
 #include <string>
 #include <vector>
+
+class Amesos_BaseSolver;
+class Epetra_LinearProblem;
 
 namespace pneuma
 {
@@ -34,6 +38,13 @@ namespace pneuma
       void
       set_constant_modes(const std::vector<std::vector<bool>> &modes);
 
+      LinearSolver();
+      ~LinearSolver();
+
+      /// Forget the symbolic factorization (call after the sparsity changes).
+      void
+      reset();
+
       /**
        * Solve A x = b; returns the number of Krylov iterations (0 for the
        * direct solver). Throws SolverControl::NoConvergence on failure.
@@ -53,6 +64,13 @@ namespace pneuma
       double                         relative_tolerance = 1e-10;
       unsigned int                   max_iterations     = 1000;
       std::vector<std::vector<bool>> constant_modes;
+      std::string                    ordering;
+      // Direct solver state: the symbolic factorization (fill-reducing
+      // ordering) is computed once per matrix and reused by every Newton
+      // iteration; only the numeric factorization is redone.
+      std::unique_ptr<Epetra_LinearProblem> problem;
+      std::unique_ptr<Amesos_BaseSolver>    direct;
+      const void *                          factored_matrix = nullptr;
     };
   } // namespace solvers
 } // namespace pneuma

@@ -71,11 +71,19 @@ namespace pneuma
       void
       parse_parameters(ParameterHandler &prm);
 
-      /// Iterate from @p u (owned) to equilibrium; @p u holds the result.
+      /**
+       * Iterate from @p u (owned) to equilibrium; @p u holds the result.
+       * The pseudo-time continuation is used only if
+       * @p allow_continuation (the step starts from the unstressed state);
+       * elsewhere a failed Newton step is left to the load-step cut-back, so
+       * that no spurious branch (e.g. an everted sphere past a limit point)
+       * is picked up.
+       */
       NewtonResult
-      solve(NonlinearProblem &       problem,
-            LA::Vector &             u,
-            const ConditionalOStream &out) const;
+      solve(NonlinearProblem &        problem,
+            LA::Vector &              u,
+            const ConditionalOStream &out,
+            const bool                allow_continuation) const;
 
       unsigned int
       max_iterations() const

@@ -1,0 +1,21 @@
+#!/bin/bash
+# Installs what pneuma needs on Debian 12 (deal.II 9.4 with Trilinos, p4est,
+# MPI and MUMPS; Eigen; numdiff for the tests; Gmsh for meshes; ccache).
+# Does nothing when everything is already there.
+set -euo pipefail
+packages=(build-essential cmake ccache libdeal.ii-dev libeigen3-dev numdiff
+          gmsh openmpi-bin time python3)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" \
+    || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+echo "Installing: ${missing[*]}"
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO=sudo; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -q
+$SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"

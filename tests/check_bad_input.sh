@@ -1,0 +1,36 @@
+#!/bin/bash
+# Every bad input must stop before any work with exit code 1 and one
+# message that names the offending parameter or file; never a crash.
+# Usage: check_bad_input.sh PNEUMA_BINARY CASE_DIRECTORY
+pneuma="$1"
+dir="$2"
+fail=0
+check() { # case-file, expected exit code, text the message must contain
+  local out code
+  out=$("$pneuma" "${@:4}" "$1" 2>&1)
+  code=$?
+  # One message: a single line, and never deal.II's multi-line frames.
+  if [ "$code" -ne "$2" ] || ! grep -qF -- "$3" <<<"$out" ||
+     { [ "$2" -ne 0 ] && [ "$(wc -l <<<"$out")" -ne 1 ]; }; then
+    echo "FAIL $(basename "$1"): exit $code, message: $out"
+    fail=1
+  else
+    echo "ok   $(basename "$1"): exit $code: $(head -c 200 <<<"$out" | tr '\n' ' ')"
+  fi
+}
+check "$dir/unknown_parameter.prm"  1 "Nonexistent entry"
+check "$dir/out_of_range.prm"       1 "Polynomial degree"
+check "$dir/missing_mesh.prm"       1 "Geometry/Mesh file"
+check "$dir/empty_region.prm"       1 "Loads/Pressure regions"
+check "$dir/negative_thickness.prm" 1 "Materials/Region 0/Thickness"
+check "$dir/bad_load_curve.prm"     1 "Loads/Pressure/Function expression"
+check "$dir/missing_boundary.prm"   1 "Boundary conditions/Fixed boundaries"
+check "$dir/bad_point.prm"          1 "Boundary conditions/Fixed points"
+check "$dir/no_such_file.prm"       1 "cannot open parameter file"
+check "$dir/valid.prm"              1 "Geometry/Radius" --set "Geometry/Radius=abc"
+check "$dir/valid.prm"              1 "Geometry/No such entry" --set "Geometry/No such entry=1"
+check "$dir/valid.prm"              1 "Geometry/Radius: must be positive" --set "Geometry/Radius=-1"
+check "$dir/valid.prm"              1 "unknown option" --bogus
+check "$dir/valid.prm"              0 "finished"
+if [ $fail -eq 0 ]; then echo "all bad inputs rejected cleanly"; fi
+exit $fail

@@ -1,0 +1,73 @@
+// Consistency of the linearisation: the assembled tangent (material,
+// geometric and follower-pressure parts) against central finite
+// differences of the residual at a perturbed state, for every membrane law
+// and both element degrees; and Newton's quadratic rate near the solution
+// (Hencky membrane, last load step).
+
+#include "test_tools.h"
+
+#include <cmath>
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  bool                                     ok = true;
+
+  for (const std::string law :
+       {"St. Venant-Kirchhoff", "neo-Hookean", "Mooney-Rivlin"})
+    for (const unsigned int degree : {1u, 2u})
+      {
+        dealii::ParameterHandler prm;
+        pneuma::Simulator::declare_parameters(prm);
+        pneuma_test::apply(prm,
+                           {{"Geometry/Type", "sphere"},
+                            {"Geometry/Radius", "1"},
+                            {"Geometry/Global refinements", "1"},
+                            {"Discretisation/Polynomial degree",
+                             std::to_string(degree)},
+                            {"Materials/Region 0/Law", law},
+                            {"Materials/Region 0/Young's modulus", "1e6"},
+                            {"Materials/Region 0/Shear modulus", "1e6"},
+                            {"Materials/Region 0/C10", "3e5"},
+                            {"Materials/Region 0/C01", "2e5"},
+                            {"Loads/Pressure/Function expression", "800*t"},
+                            {"Output/Quiet", "true"}});
+        pneuma::Simulator simulator(MPI_COMM_WORLD);
+        simulator.parse_parameters(prm);
+        simulator.setup();
+        const auto check = simulator.check_tangent(1., 0.05, 1e-6);
+        const bool pass  = check.relative_error < 1e-6;
+        std::printf("tangent vs finite differences, %s, degree %u: %s\n",
+                    law.c_str(),
+                    degree,
+                    pass ? "relative error < 1e-6" : "FAIL");
+        if (!pass)
+          std::printf("  relative error %.3e\n", check.relative_error);
+        ok = ok && pass;
+      }
+
+  // Quadratic rate: order log(r_{k+1})/log(r_k) (residuals relative to the
+  // first of the step) of the last iteration above round-off.
+  const auto s = pneuma_test::run(
+    {{"Geometry/Type", "disc"},
+     {"Geometry/Radius", "0.1425"},
+     {"Geometry/Global refinements", "3"},
+     {"Materials/Region 0/Young's modulus", "3.11488e8"},
+     {"Materials/Region 0/Poisson's ratio", "0.34"},
+     {"Loads/Pressure/Function expression", "1e4*t"},
+     {"Boundary conditions/Fixed boundaries", "0: xyz"},
+     {"Load stepping/Initial increment", "0.25"},
+     {"Newton/Residual tolerance", "1e-12"},
+     {"Output/Directory", "output-newton"}});
+  const auto & r = s.last_residual_history;
+  double       order = 0.;
+  for (unsigned int k = 1; k + 1 < r.size(); ++k)
+    if (r[k + 1] / r[0] > 1e-11 && r[k] / r[0] < 1e-1)
+      order = std::log(r[k + 1] / r[0]) / std::log(r[k] / r[0]);
+  std::printf("Newton iterations in the last step: %u, observed order %s\n",
+              static_cast<unsigned int>(r.size() - 1),
+              order >= 1.8 ? ">= 1.8" : "< 1.8 (FAIL)");
+  ok = ok && s.exit_code == 0 && order >= 1.8;
+  return ok ? 0 : 1;
+}
