@@ -3,6 +3,7 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <pneuma/core/input_error.h>
+#include <pneuma/loads/loads.h>
 #include <pneuma/postprocess/membrane_fields.h>
 
 #include "simulator_impl.h"
@@ -62,21 +63,7 @@ namespace pneuma
     for (const auto &item :
          Utilities::split_string_list(prm.get("Monitor points"), ';'))
       {
-        const auto xyz = Utilities::split_string_list(item, ',');
-        check_input(xyz.size() == 3,
-                    "Output/Monitor points",
-                    "'" + item + "' is not of the form x, y, z");
-        Point<3> p;
-        for (unsigned int d = 0; d < 3; ++d)
-          try
-            {
-              p[d] = Utilities::string_to_double(xyz[d]);
-            }
-          catch (...)
-            {
-              throw InputError("Output/Monitor points",
-                               "'" + xyz[d] + "' is not a number");
-            }
+        const Point<3> p = loads::parse_point(item, "Output/Monitor points");
         monitor_points.push_back(p);
       }
     check_input(!directory.empty(), "Output/Directory", "must not be empty");

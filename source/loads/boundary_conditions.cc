@@ -93,20 +93,7 @@ namespace pneuma
           check_input(kv.size() == 2,
                       path,
                       "'" + item + "' is not of the form 'x, y, z: components'");
-          const auto xyz = Utilities::split_string_list(kv[0], ',');
-          check_input(xyz.size() == 3, path, "'" + kv[0] + "' is not x, y, z");
-          Point<3> p;
-          for (unsigned int d = 0; d < 3; ++d)
-            {
-              try
-                {
-                  p[d] = Utilities::string_to_double(xyz[d]);
-                }
-              catch (...)
-                {
-                  throw InputError(path, "'" + xyz[d] + "' is not a number");
-                }
-            }
+          const Point<3> p = parse_point(kv[0], path);
           fixed_points.emplace_back(p, parse_components(kv[1], path));
         }
       const auto fr = parse_id_list(prm.get("Fixed regions"),

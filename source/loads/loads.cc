@@ -28,6 +28,26 @@ namespace pneuma
       }
     } // namespace
 
+    Point<3>
+    parse_point(const std::string &text, const std::string &path)
+    {
+      const auto xyz = Utilities::split_string_list(text, ',');
+      check_input(xyz.size() == 3,
+                  path,
+                  "'" + text + "' is not of the form x, y, z");
+      Point<3> p;
+      for (unsigned int d = 0; d < 3; ++d)
+        try
+          {
+            p[d] = Utilities::string_to_double(xyz[d]);
+          }
+        catch (...)
+          {
+            throw InputError(path, "'" + xyz[d] + "' is not a number");
+          }
+      return p;
+    }
+
     std::set<unsigned int>
     parse_id_list(const std::string &text, const std::string &path)
     {

@@ -93,6 +93,10 @@ namespace pneuma
                    const std::string &           name,
                    const std::string &           path);
 
+    /// Parse "x, y, z" into a point; errors name @p path.
+    Point<3>
+    parse_point(const std::string &text, const std::string &path);
+
     /// Parse a comma separated list of non-negative ids.
     std::set<unsigned int>
     parse_id_list(const std::string &text, const std::string &path);
