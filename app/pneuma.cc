@@ -54,9 +54,15 @@ main(int argc, char **argv)
         {
           dealii::ParameterHandler prm;
           pneuma::Simulator::declare_parameters(prm);
+          // Defaults with their documentation, then the allowed values.
           if (root)
-            prm.print_parameters(std::cout,
-                                 dealii::ParameterHandler::Text);
+            {
+              prm.print_parameters(std::cout, dealii::ParameterHandler::Text);
+              std::cout << "\n# Allowed values of every entry\n"
+                        << "# ------------------------------\n";
+              prm.print_parameters(std::cout,
+                                   dealii::ParameterHandler::Description);
+            }
           return 0;
         }
       if (arg == "--set")
