@@ -36,8 +36,8 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const MPI_Comm comm = MPI_COMM_WORLD;
-  const bool     root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+  const MPI_Comm                           comm = MPI_COMM_WORLD;
+  const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
 
   std::string              file;
   std::vector<std::string> overrides;
@@ -125,10 +125,9 @@ main(int argc, char **argv)
           if (root && exit_code != pneuma::success)
             std::cerr << "pneuma: " << summary.message << std::endl;
           else if (root)
-            std::cout << "pneuma: finished, " << summary.n_steps
-                      << " steps, " << summary.n_newton_iterations
-                      << " Newton iterations, " << summary.wall_seconds
-                      << " s" << std::endl;
+            std::cout << "pneuma: finished, " << summary.n_steps << " steps, "
+                      << summary.n_newton_iterations << " Newton iterations, "
+                      << summary.wall_seconds << " s" << std::endl;
         }
       catch (const pneuma::InputError &e)
         {

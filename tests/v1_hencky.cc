@@ -17,7 +17,7 @@ main(int argc, char **argv)
   bool                                     ok = true;
   for (const double q : {1e4, 5e4})
     {
-      const double reference = (q == 1e4) ? 15.247e-3 : 26.194e-3;
+      const double        reference = (q == 1e4) ? 15.247e-3 : 26.194e-3;
       std::vector<double> w;
       for (const unsigned int refinement : {2u, 3u, 4u})
         {
@@ -29,8 +29,7 @@ main(int argc, char **argv)
              {"Materials/Region 0/Thickness", "1e-3"},
              {"Materials/Region 0/Young's modulus", "3.11488e8"},
              {"Materials/Region 0/Poisson's ratio", "0.34"},
-             {"Loads/Pressure/Function expression",
-              std::to_string(q) + "*t"},
+             {"Loads/Pressure/Function expression", std::to_string(q) + "*t"},
              {"Boundary conditions/Fixed boundaries", "0: xyz"},
              {"Load stepping/Initial increment", "0.25"},
              {"Output/Directory", "output-v1"},
@@ -41,10 +40,16 @@ main(int argc, char **argv)
       const double order =
         std::log(std::abs(w[0] - w[1]) / std::abs(w[1] - w[2])) / std::log(2.);
       std::printf("q = %.0f Pa: w0 on 192, 768, 3072 cells: %.4e %.4e %.4e m\n",
-                  q, w[0], w[1], w[2]);
+                  q,
+                  w[0],
+                  w[1],
+                  w[2]);
       std::printf("observed order %.1f\n", order);
       ok = pneuma_test::check("w0 at " + std::to_string(int(q)) + " Pa",
-                              w[2], reference, 5e-3) && ok;
+                              w[2],
+                              reference,
+                              5e-3)
+           && ok;
       ok = ok && order > 1.5;
     }
   return ok ? 0 : 1;

@@ -76,16 +76,16 @@ main(int argc, char **argv)
     const double dR = p * R * R / (E * t) * (1. - nu / 2.);
     const double eL = p * R / (E * t) * (0.5 - nu);
     const double eV = p * R / (E * t) * (2.5 - 2. * nu);
-    ok = ok && s.exit_code == 0;
-    ok = pneuma_test::check("linear dR", m.dR, dR, 5e-3) && ok;
+    ok              = ok && s.exit_code == 0;
+    ok              = pneuma_test::check("linear dR", m.dR, dR, 5e-3) && ok;
     ok = pneuma_test::check("linear dL/L", m.strain_z, eL, 5e-3) && ok;
-    ok = pneuma_test::check("linear dV/V",
-                            2. * m.dR / R + m.strain_z, eV, 5e-3) && ok;
+    ok = pneuma_test::check("linear dV/V", 2. * m.dR / R + m.strain_z, eV, 5e-3)
+         && ok;
   }
   // (b) finite strain, homogeneous exact state (fixed point on the two
   //     stretches, converged to machine precision).
   {
-    const double p = 1e5;
+    const double p  = 1e5;
     double       lt = 1., lz = 1.;
     for (unsigned int it = 0; it < 200; ++it)
       {
@@ -97,21 +97,22 @@ main(int argc, char **argv)
       }
     const auto s = run_cylinder("St. Venant-Kirchhoff", p, 4);
     const auto m = measure(s);
-    ok = ok && s.exit_code == 0;
-    ok = pneuma_test::check("finite-strain dR", m.dR, R * (lt - 1.), 5e-3) && ok;
-    ok = pneuma_test::check("finite-strain dL/L", m.strain_z, lz - 1., 5e-3) &&
-         ok;
+    ok           = ok && s.exit_code == 0;
+    ok =
+      pneuma_test::check("finite-strain dR", m.dR, R * (lt - 1.), 5e-3) && ok;
+    ok =
+      pneuma_test::check("finite-strain dL/L", m.strain_z, lz - 1., 5e-3) && ok;
   }
   // (c) neo-Hookean homogeneous state at l_theta = 1.2.
   {
     const double lt = 1.2;
     double       lo = 0.5, hi = 3.;
-    const auto   f  = [&](const double lz) {
+    const auto   f = [&](const double lz) {
       return lt * lt - 2. * lz * lz + 1. / (lt * lt * lz * lz);
     };
     for (unsigned int it = 0; it < 200; ++it)
       {
-        const double mid = 0.5 * (lo + hi);
+        const double mid                 = 0.5 * (lo + hi);
         (f(lo) * f(mid) <= 0. ? hi : lo) = mid;
       }
     const double lz   = 0.5 * (lo + hi);
@@ -120,9 +121,12 @@ main(int argc, char **argv)
     const double p    = muH * (lt * lt - l3sq) / (lt * lz) / (R * lt);
     std::printf("neo-Hookean: l_theta = 1.2, l_z = %.5f, p = %.4e Pa\n", lz, p);
     const auto s = run_cylinder("neo-Hookean", p, 4);
-    ok = ok && s.exit_code == 0;
-    ok = pneuma_test::check("neo-Hookean hoop stretch",
-                            1. + measure(s).dR / R, lt, 5e-3) && ok;
+    ok           = ok && s.exit_code == 0;
+    ok           = pneuma_test::check("neo-Hookean hoop stretch",
+                            1. + measure(s).dR / R,
+                            lt,
+                            5e-3)
+         && ok;
   }
   return ok ? 0 : 1;
 }

@@ -43,16 +43,17 @@ main(int argc, char **argv)
       ok             = ok && s.exit_code == 0;
       char name[64];
       std::snprintf(name, sizeof(name), "stretch at pR/(muH) = %.6f", p / 1e3);
-      ok = pneuma_test::check(name, 1. + s.monitor_displacements[0][0], l, 5e-3) &&
-           ok;
+      ok = pneuma_test::check(name, 1. + s.monitor_displacements[0][0], l, 5e-3)
+           && ok;
     }
   // Past the limit point: a clean stop.
   const auto s = inflate(1.3e3);
   const bool clean =
     s.exit_code == 2 && s.message.find("limit point") != std::string::npos;
-  std::printf("p = 1.3 mu H/R > p_max: exit code %d, limit point reported: %s\n",
-              s.exit_code,
-              clean ? "yes" : "no");
+  std::printf(
+    "p = 1.3 mu H/R > p_max: exit code %d, limit point reported: %s\n",
+    s.exit_code,
+    clean ? "yes" : "no");
   std::printf("last converged stretch %.3f (limit point at 1.383)\n",
               1. + s.monitor_displacements[0][0]);
   return (ok && clean) ? 0 : 1;

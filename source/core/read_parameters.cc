@@ -44,8 +44,8 @@ namespace pneuma
   } // namespace
 
   void
-  read_parameters(dealii::ParameterHandler &      prm,
-                  const std::string &             file,
+  read_parameters(dealii::ParameterHandler       &prm,
+                  const std::string              &file,
                   const std::vector<std::string> &overrides)
   {
     Simulator::declare_parameters(prm);

@@ -24,11 +24,13 @@ namespace pneuma
                     Triangulation<2, 3>::limit_level_difference_at_vertices)
     , dof_handler(triangulation)
     , assembler(geometry, materials, loads)
-  {}
+  {
+  }
 
   Simulator::Simulator(const MPI_Comm comm)
     : impl(std::make_unique<Impl>(comm))
-  {}
+  {
+  }
 
   Simulator::~Simulator() = default;
 
@@ -79,7 +81,7 @@ namespace pneuma
   void
   Simulator::setup()
   {
-    Impl &s = *impl;
+    Impl              &s = *impl;
     TimerOutput::Scope t(s.timer, "setup");
     s.geometry.create_triangulation(s.triangulation);
     s.fe      = std::make_unique<FESystem<2, 3>>(FE_Q<2, 3>(s.degree), 3);
@@ -96,8 +98,8 @@ namespace pneuma
     for (const auto id : all_ids)
       (void)s.materials[id];
     for (const auto id : s.loads.pressure_regions())
-      check_input(std::find(all_ids.begin(), all_ids.end(), id) !=
-                    all_ids.end(),
+      check_input(std::find(all_ids.begin(), all_ids.end(), id)
+                    != all_ids.end(),
                   "Loads/Pressure regions",
                   "the mesh has no cells in region " + std::to_string(id));
 
@@ -135,15 +137,14 @@ namespace pneuma
 
     // AMG near-null space: the three rigid translations, i.e. one
     // indicator per displacement component over the owned dofs.
-    std::vector<std::vector<bool>> modes(3,
-                                         std::vector<bool>(
-                                           locally_owned.n_elements()));
+    std::vector<std::vector<bool>> modes(
+      3, std::vector<bool>(locally_owned.n_elements()));
     for (unsigned int c = 0; c < 3; ++c)
       {
         std::vector<bool> mask(3, false);
-        mask[c]             = true;
-        const IndexSet dofs = DoFTools::extract_dofs(dof_handler,
-                                                     ComponentMask(mask));
+        mask[c] = true;
+        const IndexSet dofs =
+          DoFTools::extract_dofs(dof_handler, ComponentMask(mask));
         for (unsigned int k = 0; k < locally_owned.n_elements(); ++k)
           modes[c][k] = dofs.is_element(locally_owned.nth_index_in_set(k));
       }
@@ -183,7 +184,7 @@ namespace pneuma
   void
   Simulator::Impl::solve_linear(const double      shift,
                                 const LA::Vector &rhs,
-                                LA::Vector &      du)
+                                LA::Vector       &du)
   {
     TimerOutput::Scope t(timer, "linear solve");
     if (shift > 0.)
@@ -196,7 +197,7 @@ namespace pneuma
   double
   Simulator::Impl::shift_scale()
   {
-    double       k_sum = 0., m_sum = 0.;
+    double k_sum = 0., m_sum = 0.;
     for (const auto i : locally_owned)
       if (!constraints.is_constrained(i))
         {
@@ -261,21 +262,21 @@ namespace pneuma
     // Bergan's current stiffness parameter: (dt/|du|) relative to the
     // first step of the stage; near zero at a limit point.
     double       stiffness_reference = 0., stiffness_parameter = 1.;
-    unsigned int stiffness_stage     = numbers::invalid_unsigned_int;
+    unsigned int stiffness_stage = numbers::invalid_unsigned_int;
     LA::Vector   last_converged(solution);
 
     while (!stepping.finished(current_time))
       {
-        const double t_old  = current_time;
-        const double t_new  = stepping.next_time(t_old, dt);
-        last_converged      = solution;
-        current_time        = t_new;
+        const double t_old = current_time;
+        const double t_new = stepping.next_time(t_old, dt);
+        last_converged     = solution;
+        current_time       = t_new;
         boundary_conditions.set_prescribed_values(*mapping,
                                                   dof_handler,
                                                   t_new,
                                                   solution);
-        pcout << "Step " << step + 1 << "  t = " << t_new << "  dt = "
-              << t_new - t_old << std::endl;
+        pcout << "Step " << step + 1 << "  t = " << t_new
+              << "  dt = " << t_new - t_old << std::endl;
         auto result = newton.solve(*this,
                                    solution,
                                    pcout,
@@ -304,9 +305,8 @@ namespace pneuma
               {
                 std::ostringstream msg;
                 msg << "the load step could not be completed at t = " << t_old
-                    << " even with the minimum increment "
-                    << stepping.minimum() << " (" << result.failure_reason
-                    << ")";
+                    << " even with the minimum increment " << stepping.minimum()
+                    << " (" << result.failure_reason << ")";
                 if (stiffness_parameter < 0.1)
                   msg << "; a limit point was reached: the current stiffness "
                          "parameter fell to "
@@ -334,15 +334,14 @@ namespace pneuma
             stiffness_stage     = stage;
             stiffness_reference = ratio;
           }
-        stiffness_parameter         = ratio / stiffness_reference;
+        stiffness_parameter           = ratio / stiffness_reference;
         summary.last_residual_history = result.residual_history;
-        pcout << "  converged in " << result.iterations
-              << " iterations, wall " << std::fixed << std::setprecision(2)
-              << wall_clock.wall_time() << " s" << std::defaultfloat
-              << std::setprecision(6) << std::endl;
+        pcout << "  converged in " << result.iterations << " iterations, wall "
+              << std::fixed << std::setprecision(2) << wall_clock.wall_time()
+              << " s" << std::defaultfloat << std::setprecision(6) << std::endl;
         write_history_row(step, t_new, result.iterations);
-        if (output.write_vtu && output.vtu_interval > 0 &&
-            step % output.vtu_interval == 0)
+        if (output.write_vtu && output.vtu_interval > 0
+            && step % output.vtu_interval == 0)
           write_vtu(step, t_new);
         dt = stepping.grown(t_new - t_old, result.iterations);
       }
@@ -352,9 +351,9 @@ namespace pneuma
     summary.n_linear_solves = n_linear_solves;
     ghosted                 = solution;
     // The last converged state is always written.
-    if (output.write_vtu &&
-        (summary.exit_code != success || output.vtu_interval == 0 ||
-         step % output.vtu_interval != 0))
+    if (output.write_vtu
+        && (summary.exit_code != success || output.vtu_interval == 0
+            || step % output.vtu_interval != 0))
       write_vtu(step, current_time);
     summary.monitor_displacements = monitor_displacements();
     summary.monitor_positions     = monitor_positions;

@@ -32,7 +32,7 @@ namespace pneuma
   /// "Output" subsection.
   struct OutputParameters
   {
-    std::string           directory = "output";
+    std::string           directory    = "output";
     unsigned int          vtu_interval = 1;
     bool                  write_vtu    = true;
     bool                  test_output  = false;
@@ -67,7 +67,7 @@ namespace pneuma
     void
     solve_linear(const double      shift,
                  const LA::Vector &rhs,
-                 LA::Vector &      du) override;
+                 LA::Vector       &du) override;
     double
     shift_scale() override;
     double
@@ -104,16 +104,16 @@ namespace pneuma
     Timer              wall_clock;
 
     // Parameters.
-    geometry::SceneGenerator      geometry;
-    membrane::MaterialRegions     materials;
-    loads::Loads                  loads;
-    loads::BoundaryConditions     boundary_conditions;
-    loads::RigidRegions           rigid_regions;
-    solvers::NewtonSolver         newton;
-    solvers::LinearSolver         linear_solver;
-    solvers::LoadStepping         stepping;
-    OutputParameters              output;
-    unsigned int                  degree = 1;
+    geometry::SceneGenerator  geometry;
+    membrane::MaterialRegions materials;
+    loads::Loads              loads;
+    loads::BoundaryConditions boundary_conditions;
+    loads::RigidRegions       rigid_regions;
+    solvers::NewtonSolver     newton;
+    solvers::LinearSolver     linear_solver;
+    solvers::LoadStepping     stepping;
+    OutputParameters          output;
+    unsigned int              degree = 1;
 
     // Discretisation.
     parallel::distributed::Triangulation<2, 3> triangulation;
@@ -127,8 +127,8 @@ namespace pneuma
     // State.
     LA::SparseMatrix tangent, laplacian;
     LA::Vector       solution, ghosted, external;
-    double           current_time = 0.;
-    double           initial_volume = 0.;
+    double           current_time    = 0.;
+    double           initial_volume  = 0.;
     unsigned int     n_linear_solves = 0;
 
     // Monitor points: (owning rank's) dof indices of the nearest vertex.
@@ -137,6 +137,6 @@ namespace pneuma
 
     // Output records.
     std::vector<std::pair<double, std::string>> pvd_records;
-    std::unique_ptr<std::ofstream>               history;
+    std::unique_ptr<std::ofstream>              history;
   };
 } // namespace pneuma

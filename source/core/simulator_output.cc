@@ -86,8 +86,8 @@ namespace pneuma
     pvd_records.clear();
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
-        history = std::make_unique<std::ofstream>(output.directory +
-                                                  "/history.csv");
+        history =
+          std::make_unique<std::ofstream>(output.directory + "/history.csv");
         *history << "step,time,newton_iterations,wall_seconds";
         if (geometry.is_closed())
           *history << ",volume";
@@ -118,8 +118,8 @@ namespace pneuma
         for (const auto &cell : dof_handler.active_cell_iterators())
           if (cell->is_locally_owned() && !found)
             for (const auto v : cell->vertex_indices())
-              if (cell->vertex(v).distance(p) <= global_min * (1 + 1e-12) &&
-                  locally_owned.is_element(cell->vertex_dof_index(v, 0)))
+              if (cell->vertex(v).distance(p) <= global_min * (1 + 1e-12)
+                  && locally_owned.is_element(cell->vertex_dof_index(v, 0)))
                 {
                   for (unsigned int c = 0; c < 3; ++c)
                     {
@@ -167,7 +167,7 @@ namespace pneuma
                                      const double       t,
                                      const unsigned int newton_iterations)
   {
-    ghosted             = solution;
+    ghosted = solution;
     const double volume =
       geometry.is_closed() ? assembler.enclosed_volume(ghosted) : 0.;
     const auto monitors = monitor_displacements();
@@ -193,16 +193,14 @@ namespace pneuma
     AssertThrow(std::isfinite(solution.l2_norm()),
                 ExcMessage("refusing to write a non-finite solution"));
 
-    const postprocess::CellFields fields =
-      postprocess::membrane_cell_fields(*mapping,
-                                        dof_handler,
-                                        materials,
-                                        ghosted);
+    const postprocess::CellFields fields = postprocess::membrane_cell_fields(
+      *mapping, dof_handler, materials, ghosted);
     DataOut<2, 3> data_out;
     data_out.attach_dof_handler(dof_handler);
     const std::vector<std::string> names(3, "displacement");
     const std::vector<DataComponentInterpretation::DataComponentInterpretation>
-      interpretation(3, DataComponentInterpretation::component_is_part_of_vector);
+      interpretation(3,
+                     DataComponentInterpretation::component_is_part_of_vector);
     data_out.add_data_vector(ghosted,
                              names,
                              DataOut<2, 3>::type_dof_data,
@@ -214,9 +212,7 @@ namespace pneuma
     Vector<float> subdomain(triangulation.n_active_cells());
     subdomain = triangulation.locally_owned_subdomain();
     data_out.add_data_vector(subdomain, "subdomain");
-    data_out.build_patches(*mapping,
-                           degree,
-                           DataOut<2, 3>::curved_inner_cells);
+    data_out.build_patches(*mapping, degree, DataOut<2, 3>::curved_inner_cells);
     const std::string pvtu = data_out.write_vtu_with_pvtu_record(
       output.directory + "/", "solution", step, comm, 4);
     pvd_records.emplace_back(t, pvtu);
@@ -243,7 +239,7 @@ namespace pneuma
     assembler.assemble(ghosted, none, request);
     reaction.fill(0.);
     applied.fill(0.);
-    const auto &fe = dof_handler.get_fe();
+    const auto                          &fe = dof_handler.get_fe();
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     std::vector<bool>                    seen_dummy;
     (void)seen_dummy;
@@ -257,8 +253,8 @@ namespace pneuma
         for (const auto i : component_dofs)
           {
             applied[c] += ext[i];
-            if (constraints.is_constrained(i) &&
-                constraints.get_constraint_entries(i)->empty())
+            if (constraints.is_constrained(i)
+                && constraints.get_constraint_entries(i)->empty())
               reaction[c] -= residual[i];
           }
         reaction[c] = Utilities::MPI::sum(reaction[c], comm);
@@ -282,8 +278,7 @@ namespace pneuma
          << ",\n"
          << "  \"steps\": " << summary.n_steps << ",\n"
          << "  \"cutbacks\": " << summary.n_cutbacks << ",\n"
-         << "  \"newton_iterations\": " << summary.n_newton_iterations
-         << ",\n"
+         << "  \"newton_iterations\": " << summary.n_newton_iterations << ",\n"
          << "  \"linear_solves\": " << summary.n_linear_solves << ",\n"
          << "  \"final_time\": " << summary.final_time << ",\n"
          << "  \"initial_volume\": " << summary.initial_volume << ",\n"
@@ -291,20 +286,19 @@ namespace pneuma
          << "  \"reaction\": [" << summary.reaction[0] << ", "
          << summary.reaction[1] << ", " << summary.reaction[2] << "],\n"
          << "  \"applied_load\": [" << summary.applied_load[0] << ", "
-         << summary.applied_load[1] << ", " << summary.applied_load[2]
-         << "],\n"
+         << summary.applied_load[1] << ", " << summary.applied_load[2] << "],\n"
          << "  \"monitor_points\": [";
     for (unsigned int m = 0; m < summary.monitor_displacements.size(); ++m)
       {
         const auto &x = summary.monitor_positions[m];
         const auto &u = summary.monitor_displacements[m];
         json << (m ? ",\n" : "\n") << "    {\"position\": [" << x[0] << ", "
-             << x[1] << ", " << x[2] << "], \"displacement\": [" << u[0]
-             << ", " << u[1] << ", " << u[2] << "]}";
+             << x[1] << ", " << x[2] << "], \"displacement\": [" << u[0] << ", "
+             << u[1] << ", " << u[2] << "]}";
       }
     json << "\n  ],\n  \"timings\": {";
     const auto times = timer.get_summary_data(TimerOutput::total_wall_time);
-    bool first = true;
+    bool       first = true;
     for (const auto &t : times)
       {
         json << (first ? "" : ",") << "\n    \"" << t.first
@@ -324,8 +318,7 @@ namespace pneuma
             << "final_time " << summary.final_time << "\n";
         if (geometry.is_closed())
           out << "volume " << summary.volume << "\n";
-        for (unsigned int m = 0; m < summary.monitor_displacements.size();
-             ++m)
+        for (unsigned int m = 0; m < summary.monitor_displacements.size(); ++m)
           {
             const auto &u = summary.monitor_displacements[m];
             out << "monitor " << m << " u = " << u[0] << " " << u[1] << " "

@@ -98,8 +98,8 @@ namespace pneuma
     bool
     SceneGenerator::is_closed() const
     {
-      return geometry_type == "sphere" || geometry_type == "closed cylinder" ||
-             (geometry_type == "gmsh" && orientation_mode != "as meshed");
+      return geometry_type == "sphere" || geometry_type == "closed cylinder"
+             || (geometry_type == "gmsh" && orientation_mode != "as meshed");
     }
 
     double
@@ -115,9 +115,9 @@ namespace pneuma
             return -1.;
           return ((x - interior_point) * n >= 0.) ? 1. : -1.;
         }
-      const Point<3> centre = (geometry_type == "sphere") ?
-                                Point<3>() :
-                                Point<3>(0.5 * length, 0., 0.);
+      const Point<3> centre = (geometry_type == "sphere")
+                                ? Point<3>()
+                                : Point<3>(0.5 * length, 0., 0.);
       return ((x - centre) * n >= 0.) ? 1. : -1.;
     }
 
@@ -147,11 +147,11 @@ namespace pneuma
         {
           // Surface of a solid cylinder: hull and two flat caps.
           const unsigned int n_axial =
-            cells_along_length > 0 ?
-              cells_along_length :
-              std::max(1u,
-                       static_cast<unsigned int>(
-                         std::round(length / (0.5 * M_PI * radius))));
+            cells_along_length > 0
+              ? cells_along_length
+              : std::max(1u,
+                         static_cast<unsigned int>(
+                           std::round(length / (0.5 * M_PI * radius))));
           Triangulation<3> solid;
           GridGenerator::subdivided_cylinder(solid,
                                              n_axial,
@@ -172,8 +172,8 @@ namespace pneuma
           catch (const std::exception &e)
             {
               throw InputError("Geometry/Mesh file",
-                               "cannot read '" + mesh_file +
-                                 "' as a 2D-in-3D Gmsh mesh");
+                               "cannot read '" + mesh_file
+                                 + "' as a 2D-in-3D Gmsh mesh");
             }
           check_input(coarse.n_active_cells() > 0,
                       "Geometry/Mesh file",
@@ -186,9 +186,9 @@ namespace pneuma
         for (const auto &cell : coarse.active_cell_iterators())
           {
             const double xc = cell->center()[0];
-            cell->set_material_id(std::abs(xc) < 1e-8 * length ? 1 :
-                                  std::abs(xc - length) < 1e-8 * length ? 2 :
-                                                                          0);
+            cell->set_material_id(std::abs(xc) < 1e-8 * length            ? 1
+                                  : std::abs(xc - length) < 1e-8 * length ? 2
+                                                                          : 0);
           }
       else if (geometry_type != "gmsh")
         for (const auto &cell : coarse.active_cell_iterators())
@@ -219,9 +219,9 @@ namespace pneuma
           for (const auto &cell : tria.active_cell_iterators())
             if (cell->material_id() == 0)
               cell->set_all_manifold_ids(curved_manifold);
-          tria.set_manifold(curved_manifold,
-                            CylindricalManifold<2, 3>(Tensor<1, 3>({1., 0., 0.}),
-                                                      Point<3>()));
+          tria.set_manifold(
+            curved_manifold,
+            CylindricalManifold<2, 3>(Tensor<1, 3>({1., 0., 0.}), Point<3>()));
         }
 
       tria.refine_global(refinements);

@@ -24,8 +24,8 @@ namespace pneuma
           {
             check_input(c == 'x' || c == 'y' || c == 'z',
                         path,
-                        "component '" + std::string(1, c) +
-                          "' is not one of x, y, z");
+                        "component '" + std::string(1, c)
+                          + "' is not one of x, y, z");
             mask[c - 'x'] = true;
           }
         return mask;
@@ -34,7 +34,8 @@ namespace pneuma
 
     BoundaryConditions::BoundaryConditions()
       : displacement_function(std::make_unique<Functions::ParsedFunction<3>>(3))
-    {}
+    {
+    }
 
     void
     BoundaryConditions::declare_parameters(ParameterHandler &prm)
@@ -92,7 +93,8 @@ namespace pneuma
           const auto        kv   = Utilities::split_string_list(item, ':');
           check_input(kv.size() == 2,
                       path,
-                      "'" + item + "' is not of the form 'x, y, z: components'");
+                      "'" + item
+                        + "' is not of the form 'x, y, z: components'");
           const Point<3> p = parse_point(kv[0], path);
           fixed_points.emplace_back(p, parse_components(kv[1], path));
         }
@@ -123,12 +125,10 @@ namespace pneuma
               if (cell->face(f)->at_boundary())
                 boundary_ids.insert(cell->face(f)->boundary_id());
           }
-      const MPI_Comm comm = dof_handler.get_communicator();
-      auto           all_boundaries =
-        Utilities::MPI::compute_set_union(std::vector<unsigned int>(
-                                            boundary_ids.begin(),
-                                            boundary_ids.end()),
-                                          comm);
+      const MPI_Comm comm           = dof_handler.get_communicator();
+      auto           all_boundaries = Utilities::MPI::compute_set_union(
+        std::vector<unsigned int>(boundary_ids.begin(), boundary_ids.end()),
+        comm);
       auto all_materials = Utilities::MPI::compute_set_union(
         std::vector<unsigned int>(material_ids.begin(), material_ids.end()),
         comm);
@@ -139,8 +139,8 @@ namespace pneuma
       for (const auto &fb : fixed_boundaries)
         check_input(b.count(fb.first),
                     "Boundary conditions/Fixed boundaries",
-                    "the mesh has no boundary with id " +
-                      std::to_string(fb.first));
+                    "the mesh has no boundary with id "
+                      + std::to_string(fb.first));
       for (const auto id : displaced_boundaries)
         check_input(b.count(id),
                     "Boundary conditions/Prescribed displacement boundaries",
@@ -152,7 +152,7 @@ namespace pneuma
     }
 
     std::map<types::global_dof_index, double>
-    BoundaryConditions::prescribed_dofs(const Mapping<2, 3> &   mapping,
+    BoundaryConditions::prescribed_dofs(const Mapping<2, 3>    &mapping,
                                         const DoFHandler<2, 3> &dof_handler,
                                         const double            t) const
     {
@@ -202,8 +202,8 @@ namespace pneuma
           for (const auto &cell : dof_handler.active_cell_iterators())
             if (!cell->is_artificial())
               for (const auto v : cell->vertex_indices())
-                if (cell->vertex(v).distance(fp.first) <=
-                    global_min * (1. + 1e-12) + 1e-14)
+                if (cell->vertex(v).distance(fp.first)
+                    <= global_min * (1. + 1e-12) + 1e-14)
                   for (unsigned int c = 0; c < 3; ++c)
                     if (fp.second[c])
                       values[cell->vertex_dof_index(v, c)] = 0.;
@@ -213,9 +213,9 @@ namespace pneuma
 
     void
     BoundaryConditions::add_update_constraints(
-      const DoFHandler<2, 3> &                 dof_handler,
+      const DoFHandler<2, 3>                  &dof_handler,
       const std::set<types::global_dof_index> &rigid_slaves,
-      AffineConstraints<double> &              constraints) const
+      AffineConstraints<double>               &constraints) const
     {
       // The mapping does not matter for homogeneous values.
       const auto values =
@@ -225,8 +225,8 @@ namespace pneuma
         {
           if (rigid_slaves.count(v.first))
             conflict = true;
-          else if (constraints.can_store_line(v.first) &&
-                   !constraints.is_constrained(v.first))
+          else if (constraints.can_store_line(v.first)
+                   && !constraints.is_constrained(v.first))
             constraints.add_line(v.first);
         }
       check_input(!Utilities::MPI::logical_or(conflict,
@@ -239,10 +239,10 @@ namespace pneuma
 
     void
     BoundaryConditions::set_prescribed_values(
-      const Mapping<2, 3> &   mapping,
+      const Mapping<2, 3>    &mapping,
       const DoFHandler<2, 3> &dof_handler,
       const double            t,
-      LA::Vector &            solution) const
+      LA::Vector             &solution) const
     {
       const auto values = prescribed_dofs(mapping, dof_handler, t);
       for (const auto &v : values)

@@ -14,7 +14,7 @@ namespace pneuma
     namespace
     {
       void
-      declare_function(ParameterHandler & prm,
+      declare_function(ParameterHandler  &prm,
                        const std::string &name,
                        const unsigned int n_components,
                        const std::string &expression,
@@ -69,10 +69,10 @@ namespace pneuma
     }
 
     void
-    parse_function(ParameterHandler &            prm,
+    parse_function(ParameterHandler             &prm,
                    Functions::ParsedFunction<3> &function,
-                   const std::string &           name,
-                   const std::string &           path)
+                   const std::string            &name,
+                   const std::string            &path)
     {
       prm.enter_subsection(name);
       const std::string expression = prm.get("Function expression");
@@ -111,7 +111,8 @@ namespace pneuma
       , gravity_function(std::make_unique<Functions::ParsedFunction<3>>(3))
       , surface_function(std::make_unique<Functions::ParsedFunction<3>>(3))
       , line_function(std::make_unique<Functions::ParsedFunction<3>>(3))
-    {}
+    {
+    }
 
     void
     Loads::declare_parameters(ParameterHandler &prm)
@@ -183,7 +184,7 @@ namespace pneuma
     {
       Tensor<1, 3>
       vector_value(Functions::ParsedFunction<3> &f,
-                   const Point<3> &              x,
+                   const Point<3>               &x,
                    const double                  t)
       {
         f.set_time(t);

@@ -18,13 +18,13 @@ namespace pneuma
       global_best(const double score, const Point<3> &p, const MPI_Comm comm)
       {
         const std::array<double, 4> mine{{score, p[0], p[1], p[2]}};
-        const auto all = Utilities::MPI::all_gather(comm, mine);
+        const auto            all  = Utilities::MPI::all_gather(comm, mine);
         std::array<double, 4> best = all[0];
         for (const auto &a : all)
-          if (a[0] > best[0] ||
-              (a[0] == best[0] &&
-               std::make_tuple(a[1], a[2], a[3]) <
-                 std::make_tuple(best[1], best[2], best[3])))
+          if (a[0] > best[0]
+              || (a[0] == best[0]
+                  && std::make_tuple(a[1], a[2], a[3])
+                       < std::make_tuple(best[1], best[2], best[3])))
             best = a;
         return Point<3>(best[1], best[2], best[3]);
       }
@@ -51,12 +51,12 @@ namespace pneuma
       prm.enter_subsection("Boundary conditions");
       const auto ids = parse_id_list(prm.get("Rigid regions"),
                                      "Boundary conditions/Rigid regions");
-      region_ids = std::set<types::material_id>(ids.begin(), ids.end());
+      region_ids     = std::set<types::material_id>(ids.begin(), ids.end());
       prm.leave_subsection();
     }
 
     IndexSet
-    RigidRegions::master_dofs(const Mapping<2, 3> &   mapping,
+    RigidRegions::master_dofs(const Mapping<2, 3>    &mapping,
                               const DoFHandler<2, 3> &dof_handler)
     {
       (void)mapping;
@@ -86,7 +86,7 @@ namespace pneuma
             centroid[d] = Utilities::MPI::sum(sum[d], comm) / total;
 
           Plate plate;
-          plate.id = id;
+          plate.id  = id;
           auto pick = [&](const auto &score) {
             double   best = -std::numeric_limits<double>::max();
             Point<3> where;
@@ -98,13 +98,11 @@ namespace pneuma
                 }
             return global_best(best, where, comm);
           };
-          plate.masters[0] = pick([&](const Point<3> &v) {
-            return -v.distance(centroid);
-          });
-          plate.masters[1] = pick([&](const Point<3> &v) {
-            return v.distance(plate.masters[0]);
-          });
-          plate.masters[2] = pick([&](const Point<3> &v) {
+          plate.masters[0] =
+            pick([&](const Point<3> &v) { return -v.distance(centroid); });
+          plate.masters[1] = pick(
+            [&](const Point<3> &v) { return v.distance(plate.masters[0]); });
+          plate.masters[2]  = pick([&](const Point<3> &v) {
             return cross_product_3d(v - plate.masters[0],
                                     plate.masters[1] - plate.masters[0])
               .norm();
@@ -115,8 +113,8 @@ namespace pneuma
                              plate.masters[2] - plate.masters[0]);
           check_input(normal.norm() > 1e-6 * size * size,
                       "Boundary conditions/Rigid regions",
-                      "region " + std::to_string(id) +
-                        " is degenerate (all its nodes on a line)");
+                      "region " + std::to_string(id)
+                        + " is degenerate (all its nodes on a line)");
           normal /= normal.norm();
           double off_plane = 0.;
           for (const auto &v : vertices)
@@ -125,10 +123,10 @@ namespace pneuma
           off_plane = Utilities::MPI::max(off_plane, comm);
           check_input(off_plane <= 1e-6 * size,
                       "Boundary conditions/Rigid regions",
-                      "region " + std::to_string(id) +
-                        " is not planar (a node is " +
-                        std::to_string(off_plane) +
-                        " m off its plane); only planar plates can be rigid");
+                      "region " + std::to_string(id)
+                        + " is not planar (a node is "
+                        + std::to_string(off_plane)
+                        + " m off its plane); only planar plates can be rigid");
 
           // Master dofs: known on the ranks that see the vertex.
           std::array<types::global_dof_index, 9> local;
@@ -157,20 +155,20 @@ namespace pneuma
     }
 
     void
-    RigidRegions::add_constraints(const Mapping<2, 3> &      mapping,
-                                  const DoFHandler<2, 3> &   dof_handler,
+    RigidRegions::add_constraints(const Mapping<2, 3>       &mapping,
+                                  const DoFHandler<2, 3>    &dof_handler,
                                   AffineConstraints<double> &constraints) const
     {
       slaves.clear();
       if (plates.empty())
         return;
-      const auto &    fe = dof_handler.get_fe();
-      Quadrature<2>   support(fe.get_unit_support_points());
-      FEValues<2, 3>  fe_values(mapping, fe, support, update_quadrature_points);
+      const auto    &fe = dof_handler.get_fe();
+      Quadrature<2>  support(fe.get_unit_support_points());
+      FEValues<2, 3> fe_values(mapping, fe, support, update_quadrature_points);
       std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
       for (const auto &plate : plates)
         {
-          const Point<3> &   A  = plate.masters[0];
+          const Point<3>    &A  = plate.masters[0];
           const Tensor<1, 3> e1 = plate.masters[1] - A;
           const Tensor<1, 3> e2 = plate.masters[2] - A;
           // Barycentric coordinates from the 2x2 normal equations.
@@ -186,11 +184,12 @@ namespace pneuma
                 for (unsigned int i = 0; i < dofs.size(); ++i)
                   {
                     const auto dof = dofs[i];
-                    if (masters.count(dof) || !constraints.can_store_line(dof) ||
-                        constraints.is_constrained(dof))
+                    if (masters.count(dof) || !constraints.can_store_line(dof)
+                        || constraints.is_constrained(dof))
                       continue;
-                    const unsigned int c = fe.system_to_component_index(i).first;
-                    const Tensor<1, 3> x = fe_values.quadrature_point(i) - A;
+                    const unsigned int c =
+                      fe.system_to_component_index(i).first;
+                    const Tensor<1, 3> x  = fe_values.quadrature_point(i) - A;
                     const double       r1 = x * e1, r2 = x * e2;
                     const double       wB = (g22 * r1 - g12 * r2) / det;
                     const double       wC = (g11 * r2 - g12 * r1) / det;

@@ -30,16 +30,17 @@ namespace pneuma
       : lambda_bar(E * nu_ / (1. - nu_ * nu_))
       , mu(E / (2. * (1. + nu_)))
       , nu(nu_)
-    {}
+    {
+    }
 
     void
     StVenantKirchhoff::evaluate(const SymmetricTensor<2, 2> &C,
-                                SymmetricTensor<2, 2> &      S,
-                                SymmetricTensor<4, 2> &      D) const
+                                SymmetricTensor<2, 2>       &S,
+                                SymmetricTensor<4, 2>       &D) const
     {
       const SymmetricTensor<2, 2> I = unit_symmetric_tensor<2>();
       const SymmetricTensor<2, 2> E = 0.5 * (C - I);
-      S = lambda_bar * trace(E) * I + 2. * mu * E;
+      S                             = lambda_bar * trace(E) * I + 2. * mu * E;
       D = lambda_bar * outer_product(I, I) + 2. * mu * identity_tensor<2>();
     }
 
@@ -69,12 +70,13 @@ namespace pneuma
                                                            const double c01_)
       : c10(c10_)
       , c01(c01_)
-    {}
+    {
+    }
 
     void
     IncompressibleMooneyRivlin::evaluate(const SymmetricTensor<2, 2> &C,
-                                         SymmetricTensor<2, 2> &      S,
-                                         SymmetricTensor<4, 2> &      D) const
+                                         SymmetricTensor<2, 2>       &S,
+                                         SymmetricTensor<4, 2>       &D) const
     {
       const SymmetricTensor<2, 2> I    = unit_symmetric_tensor<2>();
       const double                detC = determinant(C);
@@ -86,13 +88,13 @@ namespace pneuma
       const SymmetricTensor<4, 2> CioCi = symmetric_product(Ci);
 
       // dI1/dC, dI2/dC and their second derivatives (doc/theory.md).
-      const SymmetricTensor<2, 2> dI1 = I - l3sq * Ci;
-      const SymmetricTensor<2, 2> dI2 = detC * Ci + l3sq * I - trC * l3sq * Ci;
+      const SymmetricTensor<2, 2> dI1  = I - l3sq * Ci;
+      const SymmetricTensor<2, 2> dI2  = detC * Ci + l3sq * I - trC * l3sq * Ci;
       const SymmetricTensor<4, 2> ddI1 = l3sq * (CixCi + CioCi);
       const SymmetricTensor<4, 2> ddI2 =
-        detC * (CixCi - CioCi) -
-        l3sq * (outer_product(I, Ci) + outer_product(Ci, I)) +
-        trC * l3sq * (CixCi + CioCi);
+        detC * (CixCi - CioCi)
+        - l3sq * (outer_product(I, Ci) + outer_product(Ci, I))
+        + trC * l3sq * (CixCi + CioCi);
 
       S = 2. * (c10 * dI1 + c01 * dI2);
       D = 4. * (c10 * ddI1 + c01 * ddI2);
@@ -139,10 +141,10 @@ namespace pneuma
           prm.declare_entry("Law",
                             "St. Venant-Kirchhoff",
                             Patterns::Selection(law_names()),
-                            "Membrane law of the cells with material id " +
-                              std::to_string(r) +
-                              ". neo-Hookean and Mooney-Rivlin are "
-                              "incompressible (plane stress exact).");
+                            "Membrane law of the cells with material id "
+                              + std::to_string(r)
+                              + ". neo-Hookean and Mooney-Rivlin are "
+                                "incompressible (plane stress exact).");
           prm.declare_entry("Thickness",
                             "1e-3",
                             Patterns::Double(),
@@ -199,7 +201,8 @@ namespace pneuma
               const double E = prm.get_double("Young's modulus");
               check_input(E > 0.,
                           path + "/Young's modulus",
-                          "must be positive, got " + prm.get("Young's modulus"));
+                          "must be positive, got "
+                            + prm.get("Young's modulus"));
               m.law = std::make_shared<StVenantKirchhoff>(
                 E, prm.get_double("Poisson's ratio"));
             }
@@ -231,9 +234,9 @@ namespace pneuma
     {
       check_input(id < regions.size(),
                   "Materials",
-                  "the mesh has a cell with material id " + std::to_string(id) +
-                    " but only regions 0.." +
-                    std::to_string(max_regions - 1) + " can be set");
+                  "the mesh has a cell with material id " + std::to_string(id)
+                    + " but only regions 0.." + std::to_string(max_regions - 1)
+                    + " can be set");
       return regions[id];
     }
   } // namespace membrane

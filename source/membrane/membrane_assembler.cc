@@ -12,15 +12,16 @@ namespace pneuma
   {
     MembraneAssembler::MembraneAssembler(
       const geometry::SceneGenerator &geometry,
-      const MaterialRegions &         materials,
-      const loads::Loads &            loads)
+      const MaterialRegions          &materials,
+      const loads::Loads             &loads)
       : geometry(geometry)
       , materials(materials)
       , loads(loads)
-    {}
+    {
+    }
 
     void
-    MembraneAssembler::reinit(const Mapping<2, 3> &   mapping_,
+    MembraneAssembler::reinit(const Mapping<2, 3>    &mapping_,
                               const DoFHandler<2, 3> &dof_handler_,
                               const unsigned int      degree_)
     {
@@ -34,7 +35,7 @@ namespace pneuma
       /// Outward orientation of a cell from its quadrature data.
       double
       cell_orientation(const geometry::SceneGenerator &geometry,
-                       const FEValues<2, 3> &          fe_values)
+                       const FEValues<2, 3>           &fe_values)
       {
         Point<3>     x;
         Tensor<1, 3> n;
@@ -48,27 +49,26 @@ namespace pneuma
     } // namespace
 
     void
-    MembraneAssembler::assemble(const LA::Vector &               u,
+    MembraneAssembler::assemble(const LA::Vector                &u,
                                 const AffineConstraints<double> &constraints,
-                                const AssemblyRequest &          request) const
+                                const AssemblyRequest           &request) const
     {
       Assert(mapping != nullptr, ExcNotInitialized());
-      const auto &      fe = dof_handler->get_fe();
-      const QGauss<2>   quadrature(degree + 1);
-      const QGauss<1>   face_quadrature(degree + 1);
-      FEValues<2, 3>    fe_values(*mapping,
+      const auto        &fe = dof_handler->get_fe();
+      const QGauss<2>    quadrature(degree + 1);
+      const QGauss<1>    face_quadrature(degree + 1);
+      FEValues<2, 3>     fe_values(*mapping,
                                fe,
                                quadrature,
-                               update_values | update_gradients |
-                                 update_normal_vectors |
-                                 update_quadrature_points |
-                                 update_JxW_values);
+                               update_values | update_gradients
+                                 | update_normal_vectors
+                                 | update_quadrature_points
+                                 | update_JxW_values);
       FEFaceValues<2, 3> fe_face_values(*mapping,
                                         fe,
                                         face_quadrature,
-                                        update_values |
-                                          update_quadrature_points |
-                                          update_JxW_values);
+                                        update_values | update_quadrature_points
+                                          | update_JxW_values);
 
       const unsigned int n_dofs = fe.n_dofs_per_cell();
       const unsigned int n_q    = quadrature.size();
@@ -88,8 +88,8 @@ namespace pneuma
       const bool want_matrix = request.tangent != nullptr;
       const bool want_vector =
         request.residual != nullptr || request.external != nullptr;
-      const double t          = request.time;
-      const bool   uniform_p  = true;
+      const double t         = request.time;
+      const bool   uniform_p = true;
       (void)uniform_p;
       const Tensor<1, 3> g =
         loads.has_gravity() ? loads.gravity(t) : Tensor<1, 3>();
@@ -115,8 +115,8 @@ namespace pneuma
 
           const RegionMaterial &material = materials[cell->material_id()];
           const double          H        = material.thickness;
-          const double sign = cell_orientation(geometry, fe_values);
-          const bool   pressurised = loads.pressure_acts_on(cell->material_id());
+          const double          sign = cell_orientation(geometry, fe_values);
+          const bool pressurised = loads.pressure_acts_on(cell->material_id());
 
           for (unsigned int q = 0; q < n_q; ++q)
             {
@@ -129,19 +129,19 @@ namespace pneuma
                     fe_values.shape_grad_component(i, q, component[i]);
                   dN[i][0] = grad * frame.e[0];
                   dN[i][1] = grad * frame.e[1];
-                  N[i]     = fe_values.shape_value_component(i, q, component[i]);
+                  N[i] = fe_values.shape_value_component(i, q, component[i]);
                   for (unsigned int d = 0; d < 3; ++d)
                     Gu[component[i]][d] += local_u[i] * grad[d];
                 }
-              const auto a = deformed_tangents(frame, Gu);
+              const auto                  a = deformed_tangents(frame, Gu);
               const SymmetricTensor<2, 2> C = right_cauchy_green(a);
               SymmetricTensor<2, 2>       S;
               SymmetricTensor<4, 2>       D;
               material.law->evaluate(C, S, D);
               const double dA = fe_values.JxW(q);
 
-              const Point<3> &X = fe_values.quadrature_point(q);
-              const double p = pressurised ? loads.pressure(X, t) : 0.;
+              const Point<3>    &X = fe_values.quadrature_point(q);
+              const double       p = pressurised ? loads.pressure(X, t) : 0.;
               const Tensor<1, 3> area_vector = cross_product_3d(a[0], a[1]);
               Tensor<1, 3>       dead_load   = material.density * H * g;
               if (loads.has_surface_load())
@@ -182,16 +182,18 @@ namespace pneuma
                   for (unsigned int j = 0; j < n_dofs; ++j)
                     {
                       const unsigned int cj = component[j];
-                      double k = H * (B[i] * DB[j]);
+                      double             k  = H * (B[i] * DB[j]);
                       if (ci == cj)
-                        k += H * (dN[i][0] * (S[0][0] * dN[j][0] +
-                                              S[0][1] * dN[j][1]) +
-                                  dN[i][1] * (S[1][0] * dN[j][0] +
-                                              S[1][1] * dN[j][1]));
+                        k +=
+                          H
+                          * (dN[i][0]
+                               * (S[0][0] * dN[j][0] + S[0][1] * dN[j][1])
+                             + dN[i][1]
+                                 * (S[1][0] * dN[j][0] + S[1][1] * dN[j][1]));
                       if (p != 0.)
-                        k -= p * N[i] *
-                             (dN[j][0] * e_x_a2[cj][ci] +
-                              dN[j][1] * a1_x_e[cj][ci]);
+                        k -= p * N[i]
+                             * (dN[j][0] * e_x_a2[cj][ci]
+                                + dN[j][1] * a1_x_e[cj][ci]);
                       cell_matrix(i, j) += k * dA;
                     }
                 }
@@ -200,8 +202,8 @@ namespace pneuma
           // Dead line loads on listed boundaries.
           if (want_vector && !loads.line_load_boundaries().empty())
             for (const auto f : cell->face_indices())
-              if (cell->face(f)->at_boundary() &&
-                  loads.line_load_boundaries().count(
+              if (cell->face(f)->at_boundary()
+                  && loads.line_load_boundaries().count(
                     cell->face(f)->boundary_id()))
                 {
                   fe_face_values.reinit(cell, f);
@@ -212,11 +214,11 @@ namespace pneuma
                       for (unsigned int i = 0; i < n_dofs; ++i)
                         {
                           const double f_ext =
-                            load[component[i]] *
-                            fe_face_values.shape_value_component(i,
-                                                                 q,
-                                                                 component[i]) *
-                            fe_face_values.JxW(q);
+                            load[component[i]]
+                            * fe_face_values.shape_value_component(i,
+                                                                   q,
+                                                                   component[i])
+                            * fe_face_values.JxW(q);
                           cell_residual(i) -= f_ext;
                           cell_external(i) += f_ext;
                         }
@@ -254,15 +256,15 @@ namespace pneuma
     void
     MembraneAssembler::surface_laplacian(
       const AffineConstraints<double> &constraints,
-      LA::SparseMatrix &               L) const
+      LA::SparseMatrix                &L) const
     {
-      const auto &    fe = dof_handler->get_fe();
-      const QGauss<2> quadrature(degree + 1);
-      FEValues<2, 3>  fe_values(*mapping,
+      const auto                          &fe = dof_handler->get_fe();
+      const QGauss<2>                      quadrature(degree + 1);
+      FEValues<2, 3>                       fe_values(*mapping,
                                fe,
                                quadrature,
                                update_gradients | update_JxW_values);
-      const unsigned int n_dofs = fe.n_dofs_per_cell();
+      const unsigned int                   n_dofs = fe.n_dofs_per_cell();
       std::vector<types::global_dof_index> dof_indices(n_dofs);
       FullMatrix<double>                   cell_matrix(n_dofs, n_dofs);
       L = 0.;
@@ -279,13 +281,11 @@ namespace pneuma
                   for (unsigned int j = 0; j < n_dofs; ++j)
                     if (fe.system_to_component_index(j).first == ci)
                       cell_matrix(i, j) +=
-                        fe_values.shape_grad_component(i, q, ci) *
-                        fe_values.shape_grad_component(j, q, ci) *
-                        fe_values.JxW(q);
+                        fe_values.shape_grad_component(i, q, ci)
+                        * fe_values.shape_grad_component(j, q, ci)
+                        * fe_values.JxW(q);
                 }
-            constraints.distribute_local_to_global(cell_matrix,
-                                                   dof_indices,
-                                                   L);
+            constraints.distribute_local_to_global(cell_matrix, dof_indices, L);
           }
       L.compress(VectorOperation::add);
     }
@@ -293,14 +293,15 @@ namespace pneuma
     double
     MembraneAssembler::enclosed_volume(const LA::Vector &u) const
     {
-      const auto &    fe = dof_handler->get_fe();
-      const QGauss<2> quadrature(degree + 1);
-      FEValues<2, 3>  fe_values(*mapping,
+      const auto                      &fe = dof_handler->get_fe();
+      const QGauss<2>                  quadrature(degree + 1);
+      FEValues<2, 3>                   fe_values(*mapping,
                                fe,
                                quadrature,
-                               update_values | update_gradients |
-                                 update_normal_vectors |
-                                 update_quadrature_points | update_JxW_values);
+                               update_values | update_gradients
+                                 | update_normal_vectors
+                                 | update_quadrature_points
+                                 | update_JxW_values);
       const FEValuesExtractors::Vector displacement(0);
       std::vector<Tensor<2, 3>>        grad_u(quadrature.size());
       std::vector<Tensor<1, 3>>        u_q(quadrature.size());

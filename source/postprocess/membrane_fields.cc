@@ -10,10 +10,10 @@ namespace pneuma
   namespace postprocess
   {
     CellFields
-    membrane_cell_fields(const Mapping<2, 3> &             mapping,
-                         const DoFHandler<2, 3> &          dof_handler,
-                         const membrane::MaterialRegions & materials,
-                         const LA::Vector &                u)
+    membrane_cell_fields(const Mapping<2, 3>             &mapping,
+                         const DoFHandler<2, 3>          &dof_handler,
+                         const membrane::MaterialRegions &materials,
+                         const LA::Vector                &u)
     {
       CellFields f;
       f.names = {"membrane_force_xx",
@@ -38,13 +38,13 @@ namespace pneuma
         dof_handler.get_triangulation().n_active_cells();
       f.values.assign(f.names.size(), Vector<double>(n_cells));
 
-      const unsigned int degree = dof_handler.get_fe().degree;
-      const QGauss<2>    quadrature(degree + 1);
-      FEValues<2, 3>     fe_values(mapping,
+      const unsigned int               degree = dof_handler.get_fe().degree;
+      const QGauss<2>                  quadrature(degree + 1);
+      FEValues<2, 3>                   fe_values(mapping,
                                dof_handler.get_fe(),
                                quadrature,
-                               update_gradients | update_normal_vectors |
-                                 update_JxW_values);
+                               update_gradients | update_normal_vectors
+                                 | update_JxW_values);
       const FEValuesExtractors::Vector displacement(0);
       std::vector<Tensor<2, 3>>        grad_u(quadrature.size());
 
@@ -53,7 +53,7 @@ namespace pneuma
           {
             fe_values.reinit(cell);
             fe_values[displacement].get_function_gradients(u, grad_u);
-            const auto &material = materials[cell->material_id()];
+            const auto           &material = materials[cell->material_id()];
             SymmetricTensor<2, 3> n_avg;
             SymmetricTensor<2, 2> E_avg;
             Tensor<1, 3>          normal_avg;
@@ -68,7 +68,8 @@ namespace pneuma
                 SymmetricTensor<4, 2> D;
                 material.law->evaluate(C, S, D);
                 const double w = fe_values.JxW(q);
-                n_avg += w * membrane::membrane_forces(a, S, material.thickness);
+                n_avg +=
+                  w * membrane::membrane_forces(a, S, material.thickness);
                 E_avg += w * 0.5 * (C - unit_symmetric_tensor<2>());
                 l3 += w * material.law->thickness_stretch(C);
                 normal_avg += w * cross_product_3d(a[0], a[1]);
@@ -89,8 +90,8 @@ namespace pneuma
             const auto   eig = eigenvectors(n_avg);
             unsigned int kn  = 0;
             for (unsigned int e = 1; e < 3; ++e)
-              if (std::abs(eig[e].second * normal_avg) >
-                  std::abs(eig[kn].second * normal_avg))
+              if (std::abs(eig[e].second * normal_avg)
+                  > std::abs(eig[kn].second * normal_avg))
                 kn = e;
             const unsigned int k1 = (kn == 0) ? 1 : 0;
             const unsigned int k2 = (kn == 2) ? 1 : 2;
@@ -101,7 +102,7 @@ namespace pneuma
                 f.values[8 + d][k]  = eig[k1].second[d];
                 f.values[11 + d][k] = eig[k2].second[d];
               }
-            const auto e   = eigenvalues(E_avg);
+            const auto e    = eigenvalues(E_avg);
             f.values[14][k] = e[0];
             f.values[15][k] = e[1];
             f.values[16][k] = l3;

@@ -54,7 +54,7 @@ namespace pneuma
       prm.leave_subsection();
     }
 
-    LinearSolver::LinearSolver() = default;
+    LinearSolver::LinearSolver()  = default;
     LinearSolver::~LinearSolver() = default;
 
     void
@@ -74,8 +74,8 @@ namespace pneuma
 
     unsigned int
     LinearSolver::solve(const LA::SparseMatrix &A,
-                        LA::Vector &            x,
-                        const LA::Vector &      b)
+                        LA::Vector             &x,
+                        const LA::Vector       &b)
     {
       if (solver_type == "direct")
         {
@@ -87,13 +87,13 @@ namespace pneuma
               Amesos factory;
               direct.reset(factory.Create(direct_package.c_str(), *problem));
               AssertThrow(direct != nullptr,
-                          ExcMessage("Amesos solver " + direct_package +
-                                     " is not available"));
+                          ExcMessage("Amesos solver " + direct_package
+                                     + " is not available"));
               if (auto *mumps = dynamic_cast<Amesos_Mumps *>(direct.get()))
                 mumps->SetICNTL(7,
-                                ordering == "metis" ? 5 :
-                                ordering == "amd"   ? 0 :
-                                                      7);
+                                ordering == "metis" ? 5
+                                : ordering == "amd" ? 0
+                                                    : 7);
               AssertThrow(direct->SymbolicFactorization() == 0,
                           ExcMessage("symbolic factorization failed"));
               factored_matrix = &A.trilinos_matrix();
@@ -117,12 +117,12 @@ namespace pneuma
       data.constant_modes        = constant_modes;
       amg.initialize(A, data);
 
-      SolverControl control(max_iterations,
+      SolverControl                                 control(max_iterations,
                             relative_tolerance * b.l2_norm(),
                             false,
                             false);
       TrilinosWrappers::SolverGMRES::AdditionalData gmres_data(false, 200);
-      TrilinosWrappers::SolverGMRES solver(control, gmres_data);
+      TrilinosWrappers::SolverGMRES                 solver(control, gmres_data);
       solver.solve(A, x, b, amg);
       return control.last_step();
     }

@@ -62,15 +62,17 @@ namespace pneuma
       prm.leave_subsection();
 
       const std::string p = "Load stepping/";
-      check_input(stage_ends.front() > 0. &&
-                    std::is_sorted(stage_ends.begin(), stage_ends.end()) &&
-                    std::adjacent_find(stage_ends.begin(), stage_ends.end()) ==
-                      stage_ends.end(),
+      check_input(stage_ends.front() > 0.
+                    && std::is_sorted(stage_ends.begin(), stage_ends.end())
+                    && std::adjacent_find(stage_ends.begin(), stage_ends.end())
+                         == stage_ends.end(),
                   p + "Stage end times",
                   "must be positive and strictly increasing");
-      check_input(initial_increment > 0., p + "Initial increment", "must be > 0");
-      check_input(minimum_increment > 0. &&
-                    minimum_increment <= initial_increment,
+      check_input(initial_increment > 0.,
+                  p + "Initial increment",
+                  "must be > 0");
+      check_input(minimum_increment > 0.
+                    && minimum_increment <= initial_increment,
                   p + "Minimum increment",
                   "must be > 0 and <= Initial increment");
       check_input(maximum_increment >= initial_increment,
@@ -102,9 +104,9 @@ namespace pneuma
     double
     LoadStepping::grown(const double dt, const unsigned int iterations) const
     {
-      return (iterations <= easy_iterations) ?
-               std::min(dt * growth_factor, maximum_increment) :
-               dt;
+      return (iterations <= easy_iterations)
+               ? std::min(dt * growth_factor, maximum_increment)
+               : dt;
     }
 
     bool

@@ -17,7 +17,7 @@ namespace pneuma
                         "Newton iterations per load step before the step "
                         "is cut back.");
       prm.declare_entry("Residual tolerance",
-                        "1e-9",
+                        "1e-8",
                         Patterns::Double(1e-16, 1.),
                         "Converged when |r| <= tol * max(|r_0|, |f_ext|).");
       prm.declare_entry("Update tolerance",
@@ -63,15 +63,15 @@ namespace pneuma
     }
 
     bool
-    NewtonSolver::iterate(NonlinearProblem &        problem,
-                          LA::Vector &              u,
+    NewtonSolver::iterate(NonlinearProblem         &problem,
+                          LA::Vector               &u,
                           const double              shift,
-                          const LA::Vector &        u_anchor,
+                          const LA::Vector         &u_anchor,
                           const unsigned int        max_iterations,
                           const double              tolerance,
                           const double              r_ref,
                           const ConditionalOStream &out,
-                          NewtonResult &            result) const
+                          NewtonResult             &result) const
     {
       LA::Vector residual(u), trial(u), du(u), u_trial(u), Lx(u);
       // r_s(u) = r(u) + s L (u - u_anchor): the regularised residual.
@@ -98,9 +98,9 @@ namespace pneuma
             return true;
           if (it >= max_iterations)
             {
-              result.failure_reason = "no convergence in " +
-                                      std::to_string(max_iterations) +
-                                      " iterations";
+              result.failure_reason = "no convergence in "
+                                      + std::to_string(max_iterations)
+                                      + " iterations";
               return false;
             }
           du = 0.;
@@ -123,8 +123,8 @@ namespace pneuma
             }
           // Round-off floor: the residual cannot drop further (e.g. stiff
           // plates beside a soft membrane) but the update has vanished.
-          if (shift == 0. && du_norm <= update_tolerance * u.l2_norm() &&
-              r_norm <= 1e4 * tolerance * r_ref)
+          if (shift == 0. && du_norm <= update_tolerance * u.l2_norm()
+              && r_norm <= 1e4 * tolerance * r_ref)
             return true;
           LA::Vector step(du);
           double     alpha      = 1.;
@@ -136,22 +136,22 @@ namespace pneuma
               u_trial = u;
               u_trial.add(alpha, step);
               trial_norm = evaluate(u_trial, trial);
-              if (!line_search ||
-                  (std::isfinite(trial_norm) &&
-                   (trial_norm <= (1. - 1e-4 * alpha) * r_norm ||
-                    trial_norm <= tolerance * r_ref)))
+              if (!line_search
+                  || (std::isfinite(trial_norm)
+                      && (trial_norm <= (1. - 1e-4 * alpha) * r_norm
+                          || trial_norm <= tolerance * r_ref)))
                 {
                   accepted = true;
                   break;
                 }
             }
           if (print_table)
-            out << "    " << std::setw(4) << result.iterations << std::scientific
-                << std::setprecision(3) << "  " << trial_norm / r_ref << "  "
-                << alpha * du_norm / std::max(u_trial.l2_norm(), 1e-300)
-                << "  " << shift << "  " << std::defaultfloat
-                << std::setprecision(3) << (accepted ? alpha : 0.)
-                << std::endl;
+            out << "    " << std::setw(4) << result.iterations
+                << std::scientific << std::setprecision(3) << "  "
+                << trial_norm / r_ref << "  "
+                << alpha * du_norm / std::max(u_trial.l2_norm(), 1e-300) << "  "
+                << shift << "  " << std::defaultfloat << std::setprecision(3)
+                << (accepted ? alpha : 0.) << std::endl;
           if (!accepted)
             {
               result.failure_reason = "line search failed";
@@ -166,8 +166,8 @@ namespace pneuma
     }
 
     NewtonResult
-    NewtonSolver::solve(NonlinearProblem &        problem,
-                        LA::Vector &              u,
+    NewtonSolver::solve(NonlinearProblem         &problem,
+                        LA::Vector               &u,
                         const ConditionalOStream &out,
                         const bool                allow_continuation) const
     {
@@ -187,14 +187,21 @@ namespace pneuma
 
       // 1. Pure Newton with backtracking.
       const LA::Vector u_start(u);
-      if (iterate(problem, u, 0., u, max_iter, residual_tolerance, r_ref, out,
+      if (iterate(problem,
+                  u,
+                  0.,
+                  u,
+                  max_iter,
+                  residual_tolerance,
+                  r_ref,
+                  out,
                   result))
         {
           result.converged = true;
           return result;
         }
-      if (shift_factor == 0. || !allow_continuation ||
-          result.iterations >= max_iter)
+      if (shift_factor == 0. || !allow_continuation
+          || result.iterations >= max_iter)
         return result;
 
       // 2. Continuation in pseudo time: implicit steps of the Laplacian
@@ -205,8 +212,8 @@ namespace pneuma
       u = u_start;
       result.residual_history.assign(1, r0);
       problem.assemble(u, r); // the scale is taken from K at the start
-      const double unit    = problem.shift_scale();
-      double       shift   = shift_factor * unit;
+      const double unit  = problem.shift_scale();
+      double       shift = shift_factor * unit;
       LA::Vector   u_prev(u);
       while (result.iterations < 4 * max_iter)
         {
@@ -226,8 +233,8 @@ namespace pneuma
       // 3. Pure Newton to full accuracy from there.
       result.residual_history.assign(1, r.l2_norm());
       result.failure_reason.clear();
-      result.converged = iterate(problem, u, 0., u, max_iter, residual_tolerance,
-                                 r_ref, out, result);
+      result.converged = iterate(
+        problem, u, 0., u, max_iter, residual_tolerance, r_ref, out, result);
       return result;
     }
   } // namespace solvers

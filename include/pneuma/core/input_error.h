@@ -19,7 +19,8 @@ namespace pneuma
     /// @p parameter names the entry (e.g. "Geometry/Mesh file") or file.
     InputError(const std::string &parameter, const std::string &what)
       : std::runtime_error(parameter + ": " + what)
-    {}
+    {
+    }
   };
 
   /// Throw an InputError for @p parameter unless @p condition holds.

@@ -34,7 +34,7 @@ namespace pneuma
     std::string  message;
     unsigned int n_cells = 0, n_dofs = 0, n_steps = 0, n_cutbacks = 0,
                  n_newton_iterations = 0, n_linear_solves = 0;
-    double       final_time = 0., wall_seconds = 0.;
+    double final_time = 0., wall_seconds = 0.;
     /// Displacement at each monitor point at the end of the run.
     std::vector<std::array<double, 3>> monitor_displacements;
     /// Reference position of each monitor point (the nearest vertex).
@@ -96,7 +96,7 @@ namespace pneuma
    * parameter.
    */
   void
-  read_parameters(dealii::ParameterHandler &      prm,
-                  const std::string &             file,
+  read_parameters(dealii::ParameterHandler       &prm,
+                  const std::string              &file,
                   const std::vector<std::string> &overrides = {});
 } // namespace pneuma

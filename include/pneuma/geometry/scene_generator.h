@@ -25,11 +25,13 @@ namespace pneuma
      *
      * | type            | placement                         | ids |
      * |-----------------|-----------------------------------|-----|
-     * | disc            | radius a, centre 0, plane z = 0    | material 0, rim boundary 0 |
-     * | square          | side L, centre 0, plane z = 0      | material 0, edges x-,x+,y-,y+ = 0..3 |
-     * | sphere          | radius R, centre 0                 | material 0 |
-     * | closed cylinder | radius R, axis x from 0 to L, flat end caps | hull material 0, cap at x=0 material 1, cap at x=L material 2 |
-     * | gmsh            | a 2D-in-3D .msh file               | physical surfaces = material ids, physical curves = boundary ids |
+     * | disc            | radius a, centre 0, plane z = 0    | material 0, rim
+     * boundary 0 | | square          | side L, centre 0, plane z = 0      |
+     * material 0, edges x-,x+,y-,y+ = 0..3 | | sphere          | radius R,
+     * centre 0                 | material 0 | | closed cylinder | radius R,
+     * axis x from 0 to L, flat end caps | hull material 0, cap at x=0 material
+     * 1, cap at x=L material 2 | | gmsh            | a 2D-in-3D .msh file |
+     * physical surfaces = material ids, physical curves = boundary ids |
      *
      * Normals point out of closed surfaces (for the built-ins); a Gmsh mesh
      * is taken as meshed, flipped, or oriented away from an interior point.

@@ -46,19 +46,19 @@ namespace pneuma
        */
       void
       add_update_constraints(
-        const DoFHandler<2, 3> &                 dof_handler,
+        const DoFHandler<2, 3>                  &dof_handler,
         const std::set<types::global_dof_index> &rigid_slaves,
-        AffineConstraints<double> &              constraints) const;
+        AffineConstraints<double>               &constraints) const;
 
       /**
        * Write the prescribed values at pseudo time @p t into the owned
        * entries of @p solution (zero on fixed components).
        */
       void
-      set_prescribed_values(const Mapping<2, 3> &   mapping,
+      set_prescribed_values(const Mapping<2, 3>    &mapping,
                             const DoFHandler<2, 3> &dof_handler,
                             const double            t,
-                            LA::Vector &            solution) const;
+                            LA::Vector             &solution) const;
 
       /// Check that every named boundary or region exists in the mesh.
       void
@@ -67,15 +67,15 @@ namespace pneuma
     private:
       /// Map of (prescribed dof, value at t) on the locally relevant dofs.
       std::map<types::global_dof_index, double>
-      prescribed_dofs(const Mapping<2, 3> &   mapping,
+      prescribed_dofs(const Mapping<2, 3>    &mapping,
                       const DoFHandler<2, 3> &dof_handler,
                       const double            t) const;
 
-      std::map<types::boundary_id, std::array<bool, 3>> fixed_boundaries;
+      std::map<types::boundary_id, std::array<bool, 3>>     fixed_boundaries;
       std::vector<std::pair<Point<3>, std::array<bool, 3>>> fixed_points;
-      std::set<types::material_id>                     fixed_regions;
-      std::set<types::boundary_id>                     displaced_boundaries;
-      std::unique_ptr<Functions::ParsedFunction<3>>    displacement_function;
+      std::set<types::material_id>                          fixed_regions;
+      std::set<types::boundary_id>                  displaced_boundaries;
+      std::unique_ptr<Functions::ParsedFunction<3>> displacement_function;
     };
   } // namespace loads
 } // namespace pneuma

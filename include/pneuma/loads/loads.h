@@ -88,10 +88,10 @@ namespace pneuma
     /// Parse a ParsedFunction subsection, turning parser errors into a
     /// message that names the subsection.
     void
-    parse_function(ParameterHandler &           prm,
+    parse_function(ParameterHandler             &prm,
                    Functions::ParsedFunction<3> &function,
-                   const std::string &           name,
-                   const std::string &           path);
+                   const std::string            &name,
+                   const std::string            &path);
 
     /// Parse "x, y, z" into a point; errors name @p path.
     Point<3>

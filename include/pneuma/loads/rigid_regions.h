@@ -50,13 +50,13 @@ namespace pneuma
        * them as locally relevant.
        */
       IndexSet
-      master_dofs(const Mapping<2, 3> &mapping,
+      master_dofs(const Mapping<2, 3>    &mapping,
                   const DoFHandler<2, 3> &dof_handler);
 
       /// Add the plate constraints (call master_dofs() first).
       void
-      add_constraints(const Mapping<2, 3> &      mapping,
-                      const DoFHandler<2, 3> &   dof_handler,
+      add_constraints(const Mapping<2, 3>       &mapping,
+                      const DoFHandler<2, 3>    &dof_handler,
                       AffineConstraints<double> &constraints) const;
 
       /// The slave dofs added by add_constraints (locally relevant ones).
@@ -69,9 +69,9 @@ namespace pneuma
     private:
       struct Plate
       {
-        types::material_id                        id;
-        std::array<Point<3>, 3>                   masters;
-        std::array<types::global_dof_index, 9>    master_dofs;
+        types::material_id                     id;
+        std::array<Point<3>, 3>                masters;
+        std::array<types::global_dof_index, 9> master_dofs;
       };
       std::set<types::material_id>              region_ids;
       std::vector<Plate>                        plates;

@@ -7,11 +7,11 @@
  *
  * The membrane strain is the surface Green-Lagrange tensor
  * \f$E = \tfrac12(C - I)\f$ with the 2x2 right Cauchy-Green tensor
- * \f$C_{\alpha\beta} = a_\alpha\cdot a_\beta\f$, where \f$a_\alpha = F e_\alpha\f$
- * are the deformed images of the reference tangent unit vectors. Every law
- * returns the second Piola-Kirchhoff stress \f$S\f$ per unit reference volume
- * and its consistent tangent \f$\mathbb{D} = \partial S/\partial E\f$; the
- * membrane force per unit reference length is \f$H S\f$.
+ * \f$C_{\alpha\beta} = a_\alpha\cdot a_\beta\f$, where \f$a_\alpha = F
+ * e_\alpha\f$ are the deformed images of the reference tangent unit vectors.
+ * Every law returns the second Piola-Kirchhoff stress \f$S\f$ per unit
+ * reference volume and its consistent tangent \f$\mathbb{D} = \partial
+ * S/\partial E\f$; the membrane force per unit reference length is \f$H S\f$.
  *
  * Plane stress is built in: for the incompressible laws the thickness
  * stretch is eliminated exactly, \f$\lambda_3^2 = 1/\det C\f$; for St.
@@ -40,8 +40,8 @@ namespace pneuma
       /// Stress S and tangent dS/dE at the 2x2 right Cauchy-Green tensor C.
       virtual void
       evaluate(const SymmetricTensor<2, 2> &C,
-               SymmetricTensor<2, 2> &      S,
-               SymmetricTensor<4, 2> &      dS_dE) const = 0;
+               SymmetricTensor<2, 2>       &S,
+               SymmetricTensor<4, 2>       &dS_dE) const = 0;
 
       /// Strain energy per unit reference volume.
       virtual double
@@ -67,8 +67,8 @@ namespace pneuma
       StVenantKirchhoff(const double youngs_modulus, const double poisson);
       void
       evaluate(const SymmetricTensor<2, 2> &C,
-               SymmetricTensor<2, 2> &      S,
-               SymmetricTensor<4, 2> &      dS_dE) const override;
+               SymmetricTensor<2, 2>       &S,
+               SymmetricTensor<4, 2>       &dS_dE) const override;
       double
       strain_energy(const SymmetricTensor<2, 2> &C) const override;
       double
@@ -95,8 +95,8 @@ namespace pneuma
       IncompressibleMooneyRivlin(const double c10, const double c01);
       void
       evaluate(const SymmetricTensor<2, 2> &C,
-               SymmetricTensor<2, 2> &      S,
-               SymmetricTensor<4, 2> &      dS_dE) const override;
+               SymmetricTensor<2, 2>       &S,
+               SymmetricTensor<4, 2>       &dS_dE) const override;
       double
       strain_energy(const SymmetricTensor<2, 2> &C) const override;
       double

@@ -48,20 +48,20 @@ namespace pneuma
     {
     public:
       MembraneAssembler(const geometry::SceneGenerator &geometry,
-                        const MaterialRegions &         materials,
-                        const loads::Loads &            loads);
+                        const MaterialRegions          &materials,
+                        const loads::Loads             &loads);
 
       /// Set the discretisation used by all later calls.
       void
-      reinit(const Mapping<2, 3> &   mapping,
+      reinit(const Mapping<2, 3>    &mapping,
              const DoFHandler<2, 3> &dof_handler,
              const unsigned int      degree);
 
       /// Assemble at the ghosted displacement @p u as @p request asks.
       void
-      assemble(const LA::Vector &               u,
+      assemble(const LA::Vector                &u,
                const AffineConstraints<double> &constraints,
-               const AssemblyRequest &          request) const;
+               const AssemblyRequest           &request) const;
 
       /**
        * Vector surface Laplacian L_ij = int grad_S N_i . grad_S N_j dA (same
@@ -70,7 +70,7 @@ namespace pneuma
        */
       void
       surface_laplacian(const AffineConstraints<double> &constraints,
-                        LA::SparseMatrix &               L) const;
+                        LA::SparseMatrix                &L) const;
 
       /// Volume enclosed by the current surface, V = 1/3 int x.n da.
       double
@@ -78,10 +78,10 @@ namespace pneuma
 
     private:
       const geometry::SceneGenerator &geometry;
-      const MaterialRegions &         materials;
-      const loads::Loads &            loads;
-      const Mapping<2, 3> *           mapping     = nullptr;
-      const DoFHandler<2, 3> *        dof_handler = nullptr;
+      const MaterialRegions          &materials;
+      const loads::Loads             &loads;
+      const Mapping<2, 3>            *mapping     = nullptr;
+      const DoFHandler<2, 3>         *dof_handler = nullptr;
       unsigned int                    degree      = 1;
     };
   } // namespace membrane

@@ -47,10 +47,10 @@ namespace pneuma
         if (std::abs(f.N[d]) < std::abs(f.N[k]))
           k = d;
       Tensor<1, 3> t;
-      t[k]     = 1.;
-      t        = t - (t * f.N) * f.N;
-      f.e[0]   = t / t.norm();
-      f.e[1]   = dealii::cross_product_3d(f.N, f.e[0]);
+      t[k]   = 1.;
+      t      = t - (t * f.N) * f.N;
+      f.e[0] = t / t.norm();
+      f.e[1] = dealii::cross_product_3d(f.N, f.e[0]);
       return f;
     }
 
@@ -58,8 +58,8 @@ namespace pneuma
     inline std::array<Tensor<1, 3>, 2>
     deformed_tangents(const TangentFrame &frame, const Tensor<2, 3> &grad_u)
     {
-      return {{frame.e[0] + grad_u * frame.e[0],
-               frame.e[1] + grad_u * frame.e[1]}};
+      return {
+        {frame.e[0] + grad_u * frame.e[0], frame.e[1] + grad_u * frame.e[1]}};
     }
 
     /// The 2x2 right Cauchy-Green tensor C_ab = a_a . a_b.
@@ -80,10 +80,10 @@ namespace pneuma
      */
     inline SymmetricTensor<2, 3>
     membrane_forces(const std::array<Tensor<1, 3>, 2> &a,
-                    const SymmetricTensor<2, 2> &      S,
+                    const SymmetricTensor<2, 2>       &S,
                     const double                       thickness)
     {
-      const double j = dealii::cross_product_3d(a[0], a[1]).norm();
+      const double          j = dealii::cross_product_3d(a[0], a[1]).norm();
       SymmetricTensor<2, 3> n;
       for (unsigned int i = 0; i < 3; ++i)
         for (unsigned int k = i; k < 3; ++k)

@@ -33,9 +33,9 @@ namespace pneuma
 
     /// Compute the membrane cell fields at the ghosted displacement @p u.
     CellFields
-    membrane_cell_fields(const Mapping<2, 3> &              mapping,
-                         const DoFHandler<2, 3> &           dof_handler,
-                         const membrane::MaterialRegions &  materials,
-                         const LA::Vector &                 u);
+    membrane_cell_fields(const Mapping<2, 3>             &mapping,
+                         const DoFHandler<2, 3>          &dof_handler,
+                         const membrane::MaterialRegions &materials,
+                         const LA::Vector                &u);
   } // namespace postprocess
 } // namespace pneuma

@@ -70,7 +70,7 @@ namespace pneuma
       // iteration; only the numeric factorization is redone.
       std::unique_ptr<Epetra_LinearProblem> problem;
       std::unique_ptr<Amesos_BaseSolver>    direct;
-      const void *                          factored_matrix = nullptr;
+      const void                           *factored_matrix = nullptr;
     };
   } // namespace solvers
 } // namespace pneuma

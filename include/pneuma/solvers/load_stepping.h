@@ -67,8 +67,7 @@ namespace pneuma
     private:
       std::vector<double> stage_ends;
       double              initial_increment = 1., minimum_increment = 1e-4,
-             maximum_increment = 1., growth_factor = 1.5,
-             cut_back_factor = 0.5;
+             maximum_increment = 1., growth_factor = 1.5, cut_back_factor = 0.5;
       unsigned int easy_iterations = 4;
     };
   } // namespace solvers

@@ -40,7 +40,9 @@ namespace pneuma
       assemble(const LA::Vector &u, LA::Vector &residual) = 0;
       /// Solve (K + shift L) du = rhs with the last assembled tangent K.
       virtual void
-      solve_linear(const double shift, const LA::Vector &rhs, LA::Vector &du) = 0;
+      solve_linear(const double      shift,
+                   const LA::Vector &rhs,
+                   LA::Vector       &du) = 0;
       /// The scale mean(diag K)/mean(diag L) that makes the shift
       /// dimensionless.
       virtual double
@@ -80,8 +82,8 @@ namespace pneuma
        * is picked up.
        */
       NewtonResult
-      solve(NonlinearProblem &        problem,
-            LA::Vector &              u,
+      solve(NonlinearProblem         &problem,
+            LA::Vector               &u,
             const ConditionalOStream &out,
             const bool                allow_continuation) const;
 
@@ -94,23 +96,23 @@ namespace pneuma
     private:
       /// Newton on r(u) + shift L (u - u_anchor) = 0 to |r_s| <= tol r_ref.
       bool
-      iterate(NonlinearProblem &        problem,
-              LA::Vector &              u,
+      iterate(NonlinearProblem         &problem,
+              LA::Vector               &u,
               const double              shift,
-              const LA::Vector &        u_anchor,
+              const LA::Vector         &u_anchor,
               const unsigned int        max_iterations,
               const double              tolerance,
               const double              r_ref,
               const ConditionalOStream &out,
-              NewtonResult &            result) const;
+              NewtonResult             &result) const;
 
-      unsigned int max_iter             = 25;
-      double       residual_tolerance   = 1e-9;
-      double       update_tolerance     = 1e-8;
-      double       shift_factor         = 1e-2;
-      unsigned int max_line_search      = 6;
-      bool         line_search          = true;
-      bool         print_table          = true;
+      unsigned int max_iter           = 25;
+      double       residual_tolerance = 1e-8;
+      double       update_tolerance   = 1e-8;
+      double       shift_factor       = 1e-2;
+      unsigned int max_line_search    = 6;
+      bool         line_search        = true;
+      bool         print_table        = true;
     };
   } // namespace solvers
 } // namespace pneuma
