@@ -124,7 +124,17 @@ main(int argc, char **argv)
           exit_code                        = summary.exit_code;
           if (root && exit_code != pneuma::success)
             std::cerr << "pneuma: " << summary.message << std::endl;
-          else if (root)
+          if (root)
+            for (unsigned int m = 0; m < summary.monitor_displacements.size();
+                 ++m)
+              {
+                const auto &x = summary.monitor_positions[m];
+                const auto &u = summary.monitor_displacements[m];
+                std::cout << "monitor " << m << " at (" << x[0] << ", " << x[1]
+                          << ", " << x[2] << "): u = (" << u[0] << ", " << u[1]
+                          << ", " << u[2] << ") m" << std::endl;
+              }
+          if (root && exit_code == pneuma::success)
             std::cout << "pneuma: finished, " << summary.n_steps << " steps, "
                       << summary.n_newton_iterations << " Newton iterations, "
                       << summary.wall_seconds << " s" << std::endl;
