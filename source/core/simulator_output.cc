@@ -239,10 +239,6 @@ namespace pneuma
     assembler.assemble(ghosted, none, request);
     reaction.fill(0.);
     applied.fill(0.);
-    const auto                          &fe = dof_handler.get_fe();
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    std::vector<bool>                    seen_dummy;
-    (void)seen_dummy;
     // Component of each owned dof.
     for (unsigned int c = 0; c < 3; ++c)
       {

@@ -75,7 +75,6 @@ namespace pneuma
       FullMatrix<double> cell_matrix(n_dofs, n_dofs);
       Vector<double>     cell_residual(n_dofs), cell_external(n_dofs);
       std::vector<types::global_dof_index> dof_indices(n_dofs);
-      std::vector<Tensor<2, 3>>            grad_u(n_q);
       std::vector<double>                  local_u(n_dofs);
 
       std::vector<unsigned int>          component(n_dofs);
@@ -88,9 +87,7 @@ namespace pneuma
       const bool want_matrix = request.tangent != nullptr;
       const bool want_vector =
         request.residual != nullptr || request.external != nullptr;
-      const double t         = request.time;
-      const bool   uniform_p = true;
-      (void)uniform_p;
+      const double       t = request.time;
       const Tensor<1, 3> g =
         loads.has_gravity() ? loads.gravity(t) : Tensor<1, 3>();
 
