@@ -155,10 +155,17 @@ namespace pneuma
   void
   Simulator::Impl::make_constraints()
   {
+    // Kinematic constraints first (hanging nodes, rigid plates), then the
+    // prescribed components of the Newton update.
+    kinematic_constraints.clear();
+    kinematic_constraints.reinit(locally_relevant);
+    DoFTools::make_hanging_node_constraints(dof_handler, kinematic_constraints);
+    rigid_regions.add_constraints(*mapping, dof_handler, kinematic_constraints);
+    kinematic_constraints.close();
+
     constraints.clear();
     constraints.reinit(locally_relevant);
-    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
-    rigid_regions.add_constraints(*mapping, dof_handler, constraints);
+    constraints.merge(kinematic_constraints);
     boundary_conditions.add_update_constraints(dof_handler,
                                                rigid_regions.slave_dofs(),
                                                constraints);

@@ -122,6 +122,9 @@ namespace pneuma
     DoFHandler<2, 3>                           dof_handler;
     IndexSet                                   locally_owned, locally_relevant;
     AffineConstraints<double>                  constraints;
+    /// Hanging nodes and rigid plates only (no prescribed values): used to
+    /// condense forces onto the independent dofs for the reactions.
+    AffineConstraints<double>                  kinematic_constraints;
     membrane::MembraneAssembler                assembler;
 
     // State.

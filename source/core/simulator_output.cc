@@ -227,16 +227,16 @@ namespace pneuma
   Simulator::Impl::compute_reactions(std::array<double, 3> &reaction,
                                      std::array<double, 3> &applied)
   {
-    // Unconstrained residual: at prescribed dofs it is minus the reaction.
-    AffineConstraints<double> none;
-    none.close();
+    // Residual with hanging-node and rigid-plate forces condensed onto the
+    // independent dofs: at a prescribed dof, f_int - f_ext is the force the
+    // support exerts on the structure (the reaction).
     LA::Vector residual(solution), ext(solution);
     ghosted = solution;
     membrane::AssemblyRequest request;
     request.time     = current_time;
     request.residual = &residual;
     request.external = &ext;
-    assembler.assemble(ghosted, none, request);
+    assembler.assemble(ghosted, kinematic_constraints, request);
     reaction.fill(0.);
     applied.fill(0.);
     // Component of each owned dof.
@@ -251,7 +251,7 @@ namespace pneuma
             applied[c] += ext[i];
             if (constraints.is_constrained(i)
                 && constraints.get_constraint_entries(i)->empty())
-              reaction[c] -= residual[i];
+              reaction[c] += residual[i];
           }
         reaction[c] = Utilities::MPI::sum(reaction[c], comm);
         applied[c]  = Utilities::MPI::sum(applied[c], comm);
