@@ -24,6 +24,8 @@ namespace pneuma
                     Triangulation<2, 3>::limit_level_difference_at_vertices)
     , dof_handler(triangulation)
     , assembler(geometry, materials, loads)
+    , chamber_assembler(geometry, chamber_parameters)
+    , chamber_system(chamber_parameters, chamber_assembler)
   {
   }
 
@@ -52,6 +54,7 @@ namespace pneuma
     solvers::LoadStepping::declare_parameters(prm);
     solvers::NewtonSolver::declare_parameters(prm);
     solvers::LinearSolver::declare_parameters(prm);
+    chambers::ChamberParameters::declare_parameters(prm);
     OutputParameters::declare_parameters(prm);
   }
 
@@ -70,6 +73,7 @@ namespace pneuma
     s.stepping.parse_parameters(prm);
     s.newton.parse_parameters(prm);
     s.linear_solver.parse_parameters(prm);
+    s.chamber_parameters.parse_parameters(prm);
     s.output.parse_parameters(prm);
     if (s.output.quiet)
       s.pcout.set_condition(false);
@@ -105,6 +109,8 @@ namespace pneuma
 
     s.setup_system();
     s.boundary_conditions.check_against_mesh(s.dof_handler);
+    if (!s.chamber_parameters.empty())
+      s.chamber_assembler.check_chambers();
   }
 
   void
@@ -132,6 +138,7 @@ namespace pneuma
     ghosted.reinit(locally_owned, locally_relevant, comm);
 
     assembler.reinit(*mapping, dof_handler, degree);
+    chamber_assembler.reinit(*mapping, dof_handler, degree);
     laplacian.reinit(locally_owned, locally_owned, dsp, comm);
     assembler.surface_laplacian(constraints, laplacian);
 
@@ -176,28 +183,49 @@ namespace pneuma
   // The nonlinear problem seen by Newton
   // ------------------------------------------------------------------
   void
-  Simulator::Impl::assemble(const LA::Vector &u, LA::Vector &residual)
+  Simulator::Impl::assemble(const solvers::BorderedVector &u,
+                            solvers::BorderedVector       &residual)
   {
     TimerOutput::Scope t(timer, "assembly");
-    ghosted = u;
+    ghosted = u.field;
     membrane::AssemblyRequest request;
     request.time     = current_time;
-    request.residual = &residual;
+    request.residual = &residual.field;
     request.tangent  = &tangent;
     request.external = &external;
     assembler.assemble(ghosted, constraints, request);
+    if (chamber_parameters.empty())
+      {
+        residual.border.reinit(0);
+        return;
+      }
+    chamber_assembler.assemble(ghosted,
+                               constraints,
+                               chamber_system.loads(u.border),
+                               &residual.field,
+                               &tangent,
+                               chamber_measures,
+                               true);
+    chamber_system.evaluate(u.border, chamber_measures, residual.border);
   }
 
   void
-  Simulator::Impl::solve_linear(const double      shift,
-                                const LA::Vector &rhs,
-                                LA::Vector       &du)
+  Simulator::Impl::solve_linear(const double                   shift,
+                                const solvers::BorderedVector &rhs,
+                                solvers::BorderedVector       &du)
   {
     TimerOutput::Scope t(timer, "linear solve");
     if (shift > 0.)
       tangent.add(shift, laplacian);
-    linear_solver.solve(tangent, du, rhs);
-    constraints.distribute(du);
+    linear_solver.factorize(tangent);
+    if (chamber_parameters.empty())
+      {
+        linear_solver.solve(tangent, du.field, rhs.field);
+        du.border.reinit(0);
+      }
+    else
+      chamber_system.solve(linear_solver, tangent, rhs, du);
+    constraints.distribute(du.field);
     ++n_linear_solves;
   }
 
@@ -217,15 +245,41 @@ namespace pneuma
   }
 
   void
-  Simulator::Impl::laplacian_vmult(const LA::Vector &x, LA::Vector &y)
+  Simulator::Impl::laplacian_vmult(const solvers::BorderedVector &x,
+                                   solvers::BorderedVector       &y)
   {
-    laplacian.vmult(y, x);
+    laplacian.vmult(y.field, x.field);
+    y.border.reinit(x.border.size());
   }
 
   double
   Simulator::Impl::load_norm()
   {
-    return external.l2_norm();
+    const double f = external.l2_norm();
+    const double c =
+      chamber_parameters.empty() ? 0. : chamber_system.force_scale();
+    return std::sqrt(f * f + c * c);
+  }
+
+  std::vector<ChamberState>
+  Simulator::Impl::chamber_states() const
+  {
+    std::vector<ChamberState> states;
+    for (const auto &r : chamber_system.reports())
+      {
+        ChamberState c;
+        c.pressure          = r.pressure;
+        c.absolute_pressure = r.absolute_pressure;
+        c.volume            = r.volume;
+        c.gas_volume        = r.gas_volume;
+        c.liquid_volume     = r.liquid_volume;
+        c.level             = r.level;
+        c.wetted_area       = r.wetted_area;
+        c.gas_amount        = r.gas_amount;
+        c.pv_kappa          = r.pv_kappa;
+        states.push_back(c);
+      }
+    return states;
   }
 
   // ------------------------------------------------------------------
@@ -260,6 +314,12 @@ namespace pneuma
     if (geometry.is_closed())
       initial_volume = assembler.enclosed_volume(ghosted);
     summary.initial_volume = initial_volume;
+    const bool with_chambers = !chamber_parameters.empty();
+    if (with_chambers)
+      {
+        chamber_system.initialize(ghosted, 0.);
+        summary.chamber_history.emplace_back(0., chamber_states());
+      }
     write_history_row(0, 0., 0);
     if (output.write_vtu)
       write_vtu(0, 0.);
@@ -284,10 +344,29 @@ namespace pneuma
                                                   solution);
         pcout << "Step " << step + 1 << "  t = " << t_new
               << "  dt = " << t_new - t_old << std::endl;
+        if (with_chambers)
+          {
+            ghosted                 = solution;
+            const std::string error = chamber_system.begin_step(ghosted, t_new);
+            if (!error.empty())
+              {
+                summary.exit_code = solver_failed;
+                summary.message   = error + ". The last converged state (t = " +
+                                  std::to_string(t_old) + ") is written.";
+                solution     = last_converged;
+                current_time = t_old;
+                break;
+              }
+          }
+        solvers::BorderedVector state;
+        state.field = solution;
+        if (with_chambers)
+          state.border = chamber_system.pack();
         auto result = newton.solve(*this,
-                                   solution,
+                                   state,
                                    pcout,
                                    last_converged.linfty_norm() == 0.);
+        solution = state.field;
         summary.n_newton_iterations += result.iterations;
         // A closed surface must keep a positive enclosed volume.
         if (result.converged && geometry.is_closed())
@@ -331,6 +410,14 @@ namespace pneuma
 
         // Converged step.
         ++step;
+        summary.step_iterations.push_back(result.iterations);
+        if (with_chambers)
+          {
+            chamber_system.unpack(state.border);
+            ghosted = solution;
+            chamber_system.commit_step(ghosted, t_new, pcout);
+            summary.chamber_history.emplace_back(t_new, chamber_states());
+          }
         LA::Vector increment(solution);
         increment -= last_converged;
         const double ratio =
@@ -367,6 +454,8 @@ namespace pneuma
     if (geometry.is_closed())
       summary.volume = assembler.enclosed_volume(ghosted);
     compute_reactions(summary.reaction, summary.applied_load);
+    if (with_chambers)
+      summary.chambers = chamber_states();
     summary.wall_seconds = wall_clock.wall_time();
     write_summary(summary);
     return summary;
@@ -383,25 +472,47 @@ namespace pneuma
     Impl &s        = *impl;
     s.current_time = t;
     // A smooth random state: random nodal values scaled by amplitude.
-    LA::Vector u(s.solution);
+    solvers::BorderedVector u;
+    u.field = s.solution;
     for (const auto i : s.locally_owned)
-      u[i] = amplitude * (2. * std::sin(1.7 * i + 0.3) * std::cos(0.37 * i));
-    u.compress(VectorOperation::insert);
-    s.constraints.set_zero(u);
+      u.field[i] =
+        amplitude * (2. * std::sin(1.7 * i + 0.3) * std::cos(0.37 * i));
+    u.field.compress(VectorOperation::insert);
+    s.constraints.set_zero(u.field);
 
-    LA::Vector r(u), r_plus(u), r_minus(u), direction(u), Kd(u), fd(u);
+    solvers::BorderedVector direction(u);
     for (const auto i : s.locally_owned)
-      direction[i] = std::cos(0.91 * i + 0.1);
-    direction.compress(VectorOperation::insert);
-    s.constraints.set_zero(direction);
+      direction.field[i] = std::cos(0.91 * i + 0.1);
+    direction.field.compress(VectorOperation::insert);
+    s.constraints.set_zero(direction.field);
 
+    if (!s.chamber_parameters.empty())
+      {
+        s.ghosted = 0.;
+        s.chamber_system.initialize(s.ghosted, t);
+        s.ghosted = u.field;
+        s.chamber_system.begin_step(s.ghosted, t);
+        u.border = s.chamber_system.pack();
+        // Off equilibrium in the chamber unknowns too.
+        direction.border.reinit(u.border.size());
+        for (unsigned int j = 0; j < u.border.size(); ++j)
+          {
+            u.border[j] *= 1.01;
+            direction.border[j] = 0.3 + 0.1 * j;
+          }
+      }
+
+    solvers::BorderedVector r(u), r_plus(u), r_minus(u), Kd(u), fd(u);
     s.assemble(u, r);
-    s.tangent.vmult(Kd, direction);
+    if (s.chamber_parameters.empty())
+      s.tangent.vmult(Kd.field, direction.field);
+    else
+      s.chamber_system.vmult(s.tangent, direction, Kd);
 
-    LA::Vector up(u);
+    solvers::BorderedVector up(u);
     up.add(h, direction);
     s.assemble(up, r_plus);
-    LA::Vector um(u);
+    solvers::BorderedVector um(u);
     um.add(-h, direction);
     s.assemble(um, r_minus);
     fd = r_plus;

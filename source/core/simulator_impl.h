@@ -10,6 +10,9 @@
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/lac/affine_constraints.h>
 
+#include <pneuma/chambers/chamber_assembler.h>
+#include <pneuma/chambers/chamber_parameters.h>
+#include <pneuma/chambers/chamber_system.h>
 #include <pneuma/core/linear_algebra.h>
 #include <pneuma/core/simulator.h>
 #include <pneuma/geometry/scene_generator.h>
@@ -63,17 +66,22 @@ namespace pneuma
 
     // --- NonlinearProblem
     void
-    assemble(const LA::Vector &u, LA::Vector &residual) override;
+    assemble(const solvers::BorderedVector &u,
+             solvers::BorderedVector       &residual) override;
     void
-    solve_linear(const double      shift,
-                 const LA::Vector &rhs,
-                 LA::Vector       &du) override;
+    solve_linear(const double                   shift,
+                 const solvers::BorderedVector &rhs,
+                 solvers::BorderedVector       &du) override;
     double
     shift_scale() override;
     double
     load_norm() override;
     void
-    laplacian_vmult(const LA::Vector &x, LA::Vector &y) override;
+    laplacian_vmult(const solvers::BorderedVector &x,
+                    solvers::BorderedVector       &y) override;
+    /// Chamber states of the last converged step.
+    std::vector<ChamberState>
+    chamber_states() const;
 
     // --- run (simulator.cc)
     RunSummary
@@ -113,6 +121,7 @@ namespace pneuma
     solvers::LinearSolver     linear_solver;
     solvers::LoadStepping     stepping;
     OutputParameters          output;
+    chambers::ChamberParameters chamber_parameters;
     unsigned int              degree = 1;
 
     // Discretisation.
@@ -126,6 +135,9 @@ namespace pneuma
     /// condense forces onto the independent dofs for the reactions.
     AffineConstraints<double>                  kinematic_constraints;
     membrane::MembraneAssembler                assembler;
+    chambers::ChamberAssembler                 chamber_assembler;
+    chambers::ChamberSystem                    chamber_system;
+    std::vector<chambers::ChamberMeasures>     chamber_measures;
 
     // State.
     LA::SparseMatrix tangent, laplacian;

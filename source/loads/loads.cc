@@ -11,22 +11,17 @@ namespace pneuma
 {
   namespace loads
   {
-    namespace
+    void
+    declare_function(ParameterHandler  &prm,
+                     const std::string &name,
+                     const unsigned int n_components,
+                     const std::string &expression)
     {
-      void
-      declare_function(ParameterHandler  &prm,
-                       const std::string &name,
-                       const unsigned int n_components,
-                       const std::string &expression,
-                       const std::string &doc)
-      {
-        prm.enter_subsection(name);
-        Functions::ParsedFunction<3>::declare_parameters(prm, n_components);
-        prm.set("Function expression", expression);
-        prm.leave_subsection();
-        (void)doc;
-      }
-    } // namespace
+      prm.enter_subsection(name);
+      Functions::ParsedFunction<3>::declare_parameters(prm, n_components);
+      prm.set("Function expression", expression);
+      prm.leave_subsection();
+    }
 
     Point<3>
     parse_point(const std::string &text, const std::string &path)
@@ -118,7 +113,7 @@ namespace pneuma
     Loads::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Loads");
-      declare_function(prm, "Pressure", 1, "0", "");
+      declare_function(prm, "Pressure", 1, "0");
       prm.declare_entry("Pressure regions",
                         "",
                         Patterns::List(Patterns::Integer(0)),
@@ -128,17 +123,17 @@ namespace pneuma
                         "false",
                         Patterns::Bool(),
                         "Apply the gravity function to the membrane mass.");
-      declare_function(prm, "Gravity vector", 3, "0; 0; -9.81", "");
+      declare_function(prm, "Gravity vector", 3, "0; 0; -9.81");
       prm.declare_entry("Surface load",
                         "false",
                         Patterns::Bool(),
                         "Apply the dead surface traction function.");
-      declare_function(prm, "Surface traction", 3, "0; 0; 0", "");
+      declare_function(prm, "Surface traction", 3, "0; 0; 0");
       prm.declare_entry("Line load boundaries",
                         "",
                         Patterns::List(Patterns::Integer(0)),
                         "Boundary ids carrying the dead line load.");
-      declare_function(prm, "Line load", 3, "0; 0; 0", "");
+      declare_function(prm, "Line load", 3, "0; 0; 0");
       prm.leave_subsection();
     }
 

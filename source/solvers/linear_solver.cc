@@ -62,6 +62,7 @@ namespace pneuma
     {
       direct.reset();
       problem.reset();
+      amg.reset();
       factored_matrix = nullptr;
     }
 
@@ -72,10 +73,8 @@ namespace pneuma
       constant_modes = modes;
     }
 
-    unsigned int
-    LinearSolver::solve(const LA::SparseMatrix &A,
-                        LA::Vector             &x,
-                        const LA::Vector       &b)
+    void
+    LinearSolver::factorize(const LA::SparseMatrix &A)
     {
       if (solver_type == "direct")
         {
@@ -98,32 +97,45 @@ namespace pneuma
                           ExcMessage("symbolic factorization failed"));
               factored_matrix = &A.trilinos_matrix();
             }
-          problem->SetLHS(&x.trilinos_vector());
-          problem->SetRHS(const_cast<Epetra_MultiVector *>(
-            static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));
           AssertThrow(direct->NumericFactorization() == 0,
                       ExcMessage("numeric factorization failed (singular "
                                  "tangent)"));
-          AssertThrow(direct->Solve() == 0, ExcMessage("direct solve failed"));
-          return 0;
+          return;
         }
 
-      TrilinosWrappers::PreconditionAMG                 amg;
       TrilinosWrappers::PreconditionAMG::AdditionalData data;
       data.elliptic              = true;
       data.higher_order_elements = false;
       data.smoother_sweeps       = 2;
       data.aggregation_threshold = 0.02;
       data.constant_modes        = constant_modes;
-      amg.initialize(A, data);
+      amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+      amg->initialize(A, data);
+    }
 
+    unsigned int
+    LinearSolver::solve(const LA::SparseMatrix &A,
+                        LA::Vector             &x,
+                        const LA::Vector       &b)
+    {
+      if (solver_type == "direct")
+        {
+          Assert(direct, ExcMessage("factorize() first"));
+          problem->SetLHS(&x.trilinos_vector());
+          problem->SetRHS(const_cast<Epetra_MultiVector *>(
+            static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));
+          AssertThrow(direct->Solve() == 0, ExcMessage("direct solve failed"));
+          return 0;
+        }
+
+      Assert(amg, ExcMessage("factorize() first"));
       SolverControl                                 control(max_iterations,
                             relative_tolerance * b.l2_norm(),
                             false,
                             false);
       TrilinosWrappers::SolverGMRES::AdditionalData gmres_data(false, 200);
       TrilinosWrappers::SolverGMRES                 solver(control, gmres_data);
-      solver.solve(A, x, b, amg);
+      solver.solve(A, x, b, *amg);
       return control.last_step();
     }
   } // namespace solvers

@@ -64,18 +64,18 @@ namespace pneuma
 
     bool
     NewtonSolver::iterate(NonlinearProblem         &problem,
-                          LA::Vector               &u,
+                          BorderedVector           &u,
                           const double              shift,
-                          const LA::Vector         &u_anchor,
+                          const BorderedVector     &u_anchor,
                           const unsigned int        max_iterations,
                           const double              tolerance,
                           const double              r_ref,
                           const ConditionalOStream &out,
                           NewtonResult             &result) const
     {
-      LA::Vector residual(u), trial(u), du(u), u_trial(u), Lx(u);
+      BorderedVector residual(u), trial(u), du(u), u_trial(u), Lx(u);
       // r_s(u) = r(u) + s L (u - u_anchor): the regularised residual.
-      const auto evaluate = [&](const LA::Vector &x, LA::Vector &r) {
+      const auto evaluate = [&](const BorderedVector &x, BorderedVector &r) {
         problem.assemble(x, r);
         if (shift > 0.)
           {
@@ -126,7 +126,7 @@ namespace pneuma
           if (shift == 0. && du_norm <= update_tolerance * u.l2_norm()
               && r_norm <= 1e4 * tolerance * r_ref)
             return true;
-          LA::Vector step(du);
+          const BorderedVector step(du);
           double     alpha      = 1.;
           double     trial_norm = 0.;
           bool       accepted   = false;
@@ -167,12 +167,12 @@ namespace pneuma
 
     NewtonResult
     NewtonSolver::solve(NonlinearProblem         &problem,
-                        LA::Vector               &u,
+                        BorderedVector           &u,
                         const ConditionalOStream &out,
                         const bool                allow_continuation) const
     {
       NewtonResult result;
-      LA::Vector   r(u);
+      BorderedVector r(u);
       problem.assemble(u, r);
       const double r0    = r.l2_norm();
       const double r_ref = std::max(r0, problem.load_norm());
@@ -186,7 +186,7 @@ namespace pneuma
         out << "      it  |r|/|r_ref|   |du|/|u|    shift     step\n";
 
       // 1. Pure Newton with backtracking.
-      const LA::Vector u_start(u);
+      const BorderedVector u_start(u);
       if (iterate(problem,
                   u,
                   0.,
@@ -214,7 +214,7 @@ namespace pneuma
       problem.assemble(u, r); // the scale is taken from K at the start
       const double unit  = problem.shift_scale();
       double       shift = shift_factor * unit;
-      LA::Vector   u_prev(u);
+      BorderedVector u_prev(u);
       while (result.iterations < 4 * max_iter)
         {
           u_prev = u;

@@ -15,6 +15,7 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace pneuma
@@ -25,6 +26,14 @@ namespace pneuma
     success       = 0,
     bad_input     = 1,
     solver_failed = 2
+  };
+
+  /// State of one chamber (doc/user-guide.md "Chambers").
+  struct ChamberState
+  {
+    double pressure = 0., absolute_pressure = 0., volume = 0.,
+           gas_volume = 0., liquid_volume = 0., level = 0.,
+           wetted_area = 0., gas_amount = 0., pv_kappa = 0.;
   };
 
   /// What a finished run reports (also written to summary.json).
@@ -45,6 +54,12 @@ namespace pneuma
     std::array<double, 3> reaction{{0., 0., 0.}}, applied_load{{0., 0., 0.}};
     /// Newton residual norms of the last load step.
     std::vector<double> last_residual_history;
+    /// Chamber states at the end, and after every converged step (time,
+    /// states); empty without chambers.
+    std::vector<ChamberState> chambers;
+    std::vector<std::pair<double, std::vector<ChamberState>>> chamber_history;
+    /// Newton iterations of every converged step.
+    std::vector<unsigned int> step_iterations;
   };
 
   /// Result of a finite-difference check of the tangent.

@@ -85,6 +85,14 @@ namespace pneuma
       bool gravity_on = false, surface_load_on = false;
     };
 
+    /// Declare a ParsedFunction subsection @p name of (x, y, z, t) with
+    /// @p n_components and a default expression.
+    void
+    declare_function(ParameterHandler  &prm,
+                     const std::string &name,
+                     const unsigned int n_components,
+                     const std::string &expression);
+
     /// Parse a ParsedFunction subsection, turning parser errors into a
     /// message that names the subsection.
     void

@@ -46,8 +46,18 @@ namespace pneuma
       reset();
 
       /**
-       * Solve A x = b; returns the number of Krylov iterations (0 for the
-       * direct solver). Throws SolverControl::NoConvergence on failure.
+       * Factorize @p A (direct: numeric factorization, reusing the symbolic
+       * one while the matrix object is the same; amg: build the
+       * preconditioner). Every solve() until the next call reuses it, so a
+       * bordered system costs one factorization and a few substitutions.
+       */
+      void
+      factorize(const LA::SparseMatrix &A);
+
+      /**
+       * Solve A x = b with the factorization of the last factorize(A);
+       * returns the number of Krylov iterations (0 for the direct solver).
+       * Throws SolverControl::NoConvergence on failure.
        */
       unsigned int
       solve(const LA::SparseMatrix &A, LA::Vector &x, const LA::Vector &b);
@@ -71,6 +81,7 @@ namespace pneuma
       std::unique_ptr<Epetra_LinearProblem> problem;
       std::unique_ptr<Amesos_BaseSolver>    direct;
       const void                           *factored_matrix = nullptr;
+      std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
     };
   } // namespace solvers
 } // namespace pneuma

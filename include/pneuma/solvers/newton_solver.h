@@ -20,7 +20,7 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <pneuma/core/linear_algebra.h>
+#include <pneuma/solvers/bordered_vector.h>
 
 #include <vector>
 
@@ -35,21 +35,23 @@ namespace pneuma
     {
     public:
       virtual ~NonlinearProblem() = default;
-      /// Residual at @p u (owned vector), and the tangent it keeps.
+      /// Residual at @p u (owned field, border of chamber unknowns), and
+      /// the tangent it keeps.
       virtual void
-      assemble(const LA::Vector &u, LA::Vector &residual) = 0;
-      /// Solve (K + shift L) du = rhs with the last assembled tangent K.
+      assemble(const BorderedVector &u, BorderedVector &residual) = 0;
+      /// Solve J du = rhs with the last assembled Jacobian J, its field
+      /// block shifted to K + shift L.
       virtual void
-      solve_linear(const double      shift,
-                   const LA::Vector &rhs,
-                   LA::Vector       &du) = 0;
+      solve_linear(const double          shift,
+                   const BorderedVector &rhs,
+                   BorderedVector       &du) = 0;
       /// The scale mean(diag K)/mean(diag L) that makes the shift
       /// dimensionless.
       virtual double
       shift_scale() = 0;
-      /// y = L x with the regularisation matrix L.
+      /// y = L x with the regularisation matrix L (zero on the border).
       virtual void
-      laplacian_vmult(const LA::Vector &x, LA::Vector &y) = 0;
+      laplacian_vmult(const BorderedVector &x, BorderedVector &y) = 0;
       /// Norm of the external load vector, for the residual reference.
       virtual double
       load_norm() = 0;
@@ -83,7 +85,7 @@ namespace pneuma
        */
       NewtonResult
       solve(NonlinearProblem         &problem,
-            LA::Vector               &u,
+            BorderedVector           &u,
             const ConditionalOStream &out,
             const bool                allow_continuation) const;
 
@@ -97,9 +99,9 @@ namespace pneuma
       /// Newton on r(u) + shift L (u - u_anchor) = 0 to |r_s| <= tol r_ref.
       bool
       iterate(NonlinearProblem         &problem,
-              LA::Vector               &u,
+              BorderedVector           &u,
               const double              shift,
-              const LA::Vector         &u_anchor,
+              const BorderedVector     &u_anchor,
               const unsigned int        max_iterations,
               const double              tolerance,
               const double              r_ref,

@@ -1,0 +1,145 @@
+#pragma once
+
+/**
+ * @file
+ * Integrals over chamber walls: the energetically equivalent loads of the
+ * fillings with their consistent stiffness, and the measures of each
+ * chamber (doc/theory.md "Chambers"; source paper section 2, eqs. 1-6).
+ *
+ * With the current wall position x, area vector \f$a = a_1\times a_2\f$
+ * per reference area and orientation s = +-1 (out of the chamber):
+ * - volume \f$V = \frac13\int s\,x\cdot a\,dA\f$, its gradient
+ *   \f$q_i = \int s\,a\cdot N_i\,dA\f$;
+ * - with a liquid of density \f$\rho\f$ under gravity \f$g\f$
+ *   (\f$\hat g = g/|g|\f$, height \f$z = -\hat g\cdot x\f$) and free-surface
+ *   level h, the wetted part \f$z < h\f$ carries
+ *   \f$p_\ell = \rho |g| (h - z)\f$; liquid volume
+ *   \f$V_\ell = \int_{wet} s\,(h - z)\,\hat g\cdot a\,dA\f$,
+ *   \f$\partial V_\ell/\partial u = q_\ell = \int_{wet} s\,a\, N\,dA\f$,
+ *   \f$\partial V_\ell/\partial h = A_{fs} = \int_{wet} s\,\hat g\cdot a\,dA\f$
+ *   (the free-surface area);
+ * - a gas (gauge) pressure \f$p_g\f$ acts on all walls.
+ * The load \f$f_i = \int s\,(p_g + p_\ell)\,a\cdot N_i\,dA\f$ has the
+ * stiffness \f$\partial f/\partial u\f$: the follower term
+ * \f$s\,p\,N_i\,\partial a/\partial u_j\f$ and the hydrostatic gradient
+ * term \f$s\,N_i\,a\,(\rho g\cdot N_j)\f$. There are no line terms at the
+ * free surface because \f$p_\ell\f$ vanishes there.
+ */
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+
+#include <pneuma/chambers/chamber_parameters.h>
+#include <pneuma/core/linear_algebra.h>
+#include <pneuma/geometry/scene_generator.h>
+
+#include <map>
+#include <vector>
+
+namespace pneuma
+{
+  namespace chambers
+  {
+    using namespace dealii;
+
+    /// What acts on the walls of one chamber.
+    struct ChamberLoad
+    {
+      double gas_pressure = 0.; ///< gauge [Pa], on all walls
+      bool   liquid       = false;
+      double level        = 0.; ///< free-surface height h [m]
+      double density      = 0.;
+    };
+
+    /// Measures of one chamber at the current state.
+    struct ChamberMeasures
+    {
+      double volume = 0., liquid_volume = 0., free_surface_area = 0.,
+             wetted_area = 0., wall_area = 0.;
+      /// dV/du and dV_l/du (condensed by the constraints), if requested.
+      LA::Vector q, q_liquid;
+    };
+
+    /// Per-cell values for output.
+    struct ChamberCellData
+    {
+      std::vector<double> chamber, wetted, pressure;
+    };
+
+    class ChamberAssembler
+    {
+    public:
+      ChamberAssembler(const geometry::SceneGenerator &geometry,
+                       const ChamberParameters        &parameters);
+
+      /// Set the discretisation; walls are looked up by material id.
+      void
+      reinit(const Mapping<2, 3>    &mapping,
+             const DoFHandler<2, 3> &dof_handler,
+             const unsigned int      degree);
+
+      /**
+       * Check every chamber before any work: its regions exist, and its
+       * oriented walls close (the area vectors sum to zero; for an open
+       * tank, their part normal to gravity). Throws InputError naming the
+       * chamber and the gap.
+       */
+      void
+      check_chambers() const;
+
+      /**
+       * At the ghosted displacement @p u: subtract the loads @p loads from
+       * @p residual and their stiffness from @p tangent (either may be
+       * nullptr), and fill @p measures (vectors only if @p with_vectors).
+       */
+      void
+      assemble(const LA::Vector                &u,
+               const AffineConstraints<double> &constraints,
+               const std::vector<ChamberLoad>  &loads,
+               LA::Vector                      *residual,
+               LA::SparseMatrix                *tangent,
+               std::vector<ChamberMeasures>    &measures,
+               const bool                       with_vectors) const;
+
+      /// Liquid volume below @p level in chamber @p c and its derivative
+      /// (the free-surface area) at the ghosted displacement @p u.
+      std::pair<double, double>
+      liquid_volume(const LA::Vector  &u,
+                    const unsigned int c,
+                    const double       level) const;
+
+      /// Lowest and highest wall height z = -g.x / |g| of chamber @p c.
+      std::pair<double, double>
+      height_range(const LA::Vector &u, const unsigned int c) const;
+
+      /// Cell data for output (chamber number, wetted fraction, net
+      /// pressure at the centre) at the ghosted displacement @p u.
+      ChamberCellData
+      cell_data(const LA::Vector               &u,
+                const std::vector<ChamberLoad> &loads) const;
+
+      /// Height of a current position above the level origin.
+      double
+      height(const Point<3> &x) const
+      {
+        return -(unit_gravity * x);
+      }
+
+    private:
+      /// Chambers (and orientation) a cell of material @p id belongs to.
+      const std::vector<std::pair<unsigned int, int>> &
+      walls_of(const types::material_id id) const;
+
+      const geometry::SceneGenerator &geometry;
+      const ChamberParameters        &parameters;
+      const Mapping<2, 3>            *mapping     = nullptr;
+      const DoFHandler<2, 3>         *dof_handler = nullptr;
+      unsigned int                    degree      = 1;
+      Tensor<1, 3>                    unit_gravity;
+      double                          gravity_magnitude = 0.;
+      std::map<types::material_id, std::vector<std::pair<unsigned int, int>>>
+        membership;
+    };
+  } // namespace chambers
+} // namespace pneuma

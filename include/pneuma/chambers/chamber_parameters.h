@@ -1,0 +1,114 @@
+#pragma once
+
+/**
+ * @file
+ * The "Chambers" subsection: which surface regions close each chamber and
+ * with which orientation, and what fills it (doc/user-guide.md
+ * "Chambers", doc/theory.md "Chambers").
+ *
+ * A chamber is a closed surface made of membrane and rigid regions. A wall
+ * shared by two chambers (a divider) is listed by both, with opposite
+ * orientation, and carries the pressure difference. An open chamber is a
+ * tank: its listed regions are closed by rigid walls parallel to gravity,
+ * which need no mesh. Chambers may be connected: a chamber with filling
+ * "connected" shares the gas and/or liquid (one pressure, one level) of the
+ * chamber it names.
+ */
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/parsed_function.h>
+#include <deal.II/base/point.h>
+
+#include <pneuma/chambers/gas_law.h>
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace pneuma
+{
+  namespace chambers
+  {
+    using namespace dealii;
+
+    /// What fills a chamber.
+    enum class Filling
+    {
+      gas,
+      liquid,
+      liquid_and_gas,
+      connected
+    };
+
+    /// How the gas of a chamber is controlled.
+    enum class GasControl
+    {
+      /// Prescribed gauge pressure curve (optionally sealed at a time).
+      pressure,
+      /// Prescribed gas amount V_n/V_0 (volume at ambient pressure over the
+      /// initial chamber volume); pressure from the gas law.
+      amount,
+      /// Prescribed volume V/V_0; the pressure is the Lagrange multiplier.
+      volume
+    };
+
+    /// One chamber as given in the input.
+    struct ChamberDefinition
+    {
+      /// "Chambers/Chamber k", for messages.
+      std::string path;
+      /// Material ids of the walls with their orientation (+1: the cell's
+      /// outward normal points out of the chamber, -1: into it).
+      std::vector<std::pair<unsigned int, int>> regions;
+      /// If set, walls are oriented by this interior point instead
+      /// (convex chambers).
+      bool     use_interior_point = false;
+      Point<3> interior_point;
+      bool     open = false;
+
+      Filling      filling      = Filling::gas;
+      unsigned int connected_to = 0; ///< 0-based chamber index
+      GasLaw       gas_law;
+      GasControl   control    = GasControl::pressure;
+      double       seal_time  = -1.;
+      double       density    = 1000.;
+      std::unique_ptr<Functions::ParsedFunction<3>> pressure, amount, volume,
+        liquid_volume;
+
+      bool
+      has_gas() const
+      {
+        return filling == Filling::gas || filling == Filling::liquid_and_gas;
+      }
+      bool
+      has_liquid() const
+      {
+        return filling == Filling::liquid || filling == Filling::liquid_and_gas;
+      }
+    };
+
+    /// The "Chambers" subsection.
+    struct ChamberParameters
+    {
+      static constexpr unsigned int max_chambers = 8;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+
+      /// Absolute ambient pressure [Pa].
+      double ambient_pressure = 101325.;
+      /// Gravitational acceleration acting on liquids [m/s^2].
+      Tensor<1, 3>                   gravity;
+      std::vector<ChamberDefinition> chambers;
+
+      bool
+      empty() const
+      {
+        return chambers.empty();
+      }
+    };
+  } // namespace chambers
+} // namespace pneuma

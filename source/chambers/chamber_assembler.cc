@@ -1,0 +1,610 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <pneuma/chambers/chamber_assembler.h>
+#include <pneuma/chambers/free_surface_quadrature.h>
+#include <pneuma/core/input_error.h>
+#include <pneuma/membrane/surface_kinematics.h>
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace pneuma
+{
+  namespace chambers
+  {
+    namespace
+    {
+      const UpdateFlags wall_flags = update_values | update_gradients |
+                                     update_normal_vectors |
+                                     update_quadrature_points |
+                                     update_JxW_values;
+
+      /// Where one pass over a cell's quadrature points puts its results.
+      struct CellIntegrals
+      {
+        FullMatrix<double> *matrix   = nullptr; ///< += d(-f)/du
+        Vector<double>     *residual = nullptr; ///< -= f
+        Vector<double>     *q        = nullptr; ///< += dV/du (or dV_l/du)
+        double volume = 0., liquid_volume = 0., free_surface = 0.,
+               wetted = 0., area = 0.;
+      };
+
+      /**
+       * Integrate the wall terms of one chamber over the quadrature of
+       * @p fe_values: with @p liquid the hydrostatic pressure on wetted
+       * points (the quadrature covers the wetted part only), else the gas
+       * pressure and the volume.
+       */
+      void
+      integrate(const FEValues<2, 3>      &fe_values,
+                const std::vector<double> &local_u,
+                const double               s,
+                const ChamberLoad         &load,
+                const bool                 liquid,
+                const Tensor<1, 3>        &unit_gravity,
+                const double               g,
+                CellIntegrals             &out)
+      {
+        const auto        &fe     = fe_values.get_fe();
+        const unsigned int n_dofs = fe.n_dofs_per_cell();
+        std::vector<unsigned int>          component(n_dofs);
+        std::vector<double>                N(n_dofs);
+        std::vector<std::array<double, 2>> dN(n_dofs);
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          component[i] = fe.system_to_component_index(i).first;
+        const double rho_g = load.density * g;
+
+        for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+          {
+            const membrane::TangentFrame frame =
+              membrane::tangent_frame(fe_values.normal_vector(q));
+            Tensor<2, 3> Gu;
+            Tensor<1, 3> u_q;
+            for (unsigned int i = 0; i < n_dofs; ++i)
+              {
+                const Tensor<1, 3> grad =
+                  fe_values.shape_grad_component(i, q, component[i]);
+                dN[i][0] = grad * frame.e[0];
+                dN[i][1] = grad * frame.e[1];
+                N[i] = fe_values.shape_value_component(i, q, component[i]);
+                u_q[component[i]] += local_u[i] * N[i];
+                for (unsigned int d = 0; d < 3; ++d)
+                  Gu[component[i]][d] += local_u[i] * grad[d];
+              }
+            const auto         a  = membrane::deformed_tangents(frame, Gu);
+            const Tensor<1, 3> av = s * cross_product_3d(a[0], a[1]);
+            const Point<3>     x  = fe_values.quadrature_point(q) + u_q;
+            const double       dA = fe_values.JxW(q);
+            const double       depth = load.level + unit_gravity * x;
+            double             p     = load.gas_pressure;
+            if (liquid)
+              {
+                p = rho_g * depth;
+                out.liquid_volume += depth * (unit_gravity * av) * dA;
+                out.free_surface += (unit_gravity * av) * dA;
+                out.wetted += av.norm() * dA;
+              }
+            else
+              {
+                out.volume += (x * av) * dA / 3.;
+                out.area += av.norm() * dA;
+              }
+
+            for (unsigned int i = 0; i < n_dofs; ++i)
+              {
+                const double v = av[component[i]] * N[i] * dA;
+                if (out.q)
+                  (*out.q)(i) += v;
+                if (out.residual)
+                  (*out.residual)(i) -= p * v;
+              }
+            if (!out.matrix || (p == 0. && !liquid))
+              continue;
+            // d(a_1 x a_2)/du_j = dN_j,1 e_cj x a_2 + dN_j,2 a_1 x e_cj.
+            std::array<Tensor<1, 3>, 3> e_x_a2, a1_x_e;
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                Tensor<1, 3> e_d;
+                e_d[d]    = 1.;
+                e_x_a2[d] = s * cross_product_3d(e_d, a[1]);
+                a1_x_e[d] = s * cross_product_3d(a[0], e_d);
+              }
+            for (unsigned int i = 0; i < n_dofs; ++i)
+              {
+                const unsigned int ci = component[i];
+                for (unsigned int j = 0; j < n_dofs; ++j)
+                  {
+                    const unsigned int cj = component[j];
+                    double             k  = p * N[i]
+                                 * (dN[j][0] * e_x_a2[cj][ci]
+                                    + dN[j][1] * a1_x_e[cj][ci]);
+                    if (liquid) // dp/du_j = -rho g (-g_hat . e_cj) N_j
+                      k += N[i] * av[ci] * rho_g * unit_gravity[cj] * N[j];
+                    (*out.matrix)(i, j) -= k * dA;
+                  }
+              }
+          }
+      }
+
+      /// Mean reference position and normal of a cell.
+      std::pair<Point<3>, Tensor<1, 3>>
+      cell_centre_and_normal(const FEValues<2, 3> &fe_values)
+      {
+        Point<3>     x;
+        Tensor<1, 3> n;
+        for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+          {
+            x += fe_values.quadrature_point(q) / fe_values.n_quadrature_points;
+            n += fe_values.normal_vector(q);
+          }
+        return {x, n};
+      }
+    } // namespace
+
+    ChamberAssembler::ChamberAssembler(
+      const geometry::SceneGenerator &geometry,
+      const ChamberParameters        &parameters)
+      : geometry(geometry)
+      , parameters(parameters)
+    {
+    }
+
+    void
+    ChamberAssembler::reinit(const Mapping<2, 3>    &mapping_,
+                             const DoFHandler<2, 3> &dof_handler_,
+                             const unsigned int      degree_)
+    {
+      mapping           = &mapping_;
+      dof_handler       = &dof_handler_;
+      degree            = degree_;
+      gravity_magnitude = parameters.gravity.norm();
+      unit_gravity      = gravity_magnitude > 0. ?
+                            parameters.gravity / gravity_magnitude :
+                            Tensor<1, 3>({0., 0., -1.});
+      membership.clear();
+      for (unsigned int c = 0; c < parameters.chambers.size(); ++c)
+        for (const auto &[id, sign] : parameters.chambers[c].regions)
+          membership[id].emplace_back(c, sign);
+    }
+
+    const std::vector<std::pair<unsigned int, int>> &
+    ChamberAssembler::walls_of(const types::material_id id) const
+    {
+      static const std::vector<std::pair<unsigned int, int>> none;
+      const auto it = membership.find(id);
+      return it == membership.end() ? none : it->second;
+    }
+
+    namespace
+    {
+      /// Orientation of a cell's mapping normal relative to "out of the
+      /// chamber".
+      double
+      wall_sign(const geometry::SceneGenerator &geometry,
+                const ChamberDefinition        &def,
+                const int                       region_sign,
+                const Point<3>                 &x,
+                const Tensor<1, 3>             &n)
+      {
+        if (def.use_interior_point)
+          return (x - def.interior_point) * n >= 0. ? 1. : -1.;
+        return region_sign * geometry.orientation(x, n);
+      }
+    } // namespace
+
+    void
+    ChamberAssembler::check_chambers() const
+    {
+      const auto     &fe = dof_handler->get_fe();
+      const QGauss<2> quadrature(degree + 1);
+      FEValues<2, 3>  fe_values(*mapping, fe, quadrature, wall_flags);
+      const unsigned int n = parameters.chambers.size();
+      std::vector<Tensor<1, 3>> sum(n);
+      std::vector<double>       area(n, 0.);
+      std::map<types::material_id, double> region_area;
+      for (const auto &cell : dof_handler->active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const auto &walls = walls_of(cell->material_id());
+            if (walls.empty())
+              continue;
+            fe_values.reinit(cell);
+            const auto [x, n_mean] = cell_centre_and_normal(fe_values);
+            Tensor<1, 3> cell_vector;
+            double       cell_area = 0.;
+            for (unsigned int q = 0; q < quadrature.size(); ++q)
+              {
+                cell_vector += fe_values.normal_vector(q) * fe_values.JxW(q);
+                cell_area += fe_values.JxW(q);
+              }
+            region_area[cell->material_id()] += cell_area;
+            for (const auto &[c, rs] : walls)
+              {
+                const double s = wall_sign(
+                  geometry, parameters.chambers[c], rs, x, n_mean);
+                sum[c] += s * cell_vector;
+                area[c] += cell_area;
+              }
+          }
+      const MPI_Comm comm = dof_handler->get_communicator();
+      for (unsigned int c = 0; c < n; ++c)
+        {
+          const auto &def = parameters.chambers[c];
+          for (const auto &[id, sign] : def.regions)
+            {
+              const double a = Utilities::MPI::sum(
+                region_area.count(id) ? region_area.at(id) : 0., comm);
+              check_input(a > 0.,
+                          def.path + "/Regions",
+                          "the mesh has no cells in region " +
+                            std::to_string(id));
+            }
+          Tensor<1, 3> gap;
+          for (unsigned int d = 0; d < 3; ++d)
+            gap[d] = Utilities::MPI::sum(sum[c][d], comm);
+          const double total = Utilities::MPI::sum(area[c], comm);
+          if (def.open)
+            gap -= (gap * unit_gravity) * unit_gravity;
+          if (gap.norm() > 1e-8 * total)
+            {
+              std::ostringstream msg;
+              msg << "the oriented walls do not close the chamber: their "
+                     "area vectors sum to ("
+                  << gap[0] << ", " << gap[1] << ", " << gap[2]
+                  << ") m^2, |gap| = " << gap.norm() << " m^2 for "
+                  << total
+                  << " m^2 of wall. Add the missing regions or flip a wall "
+                     "with a minus sign"
+                  << (def.open ? " (an open tank may only lack walls "
+                                 "parallel to gravity)" :
+                                 "");
+              throw InputError(def.path + "/Regions", msg.str());
+            }
+          if (def.open)
+            check_input(def.filling == Filling::liquid,
+                        def.path + "/Open",
+                        "an open chamber must have Filling = liquid");
+        }
+    }
+
+    void
+    ChamberAssembler::assemble(const LA::Vector                &u,
+                               const AffineConstraints<double> &constraints,
+                               const std::vector<ChamberLoad>  &loads,
+                               LA::Vector                      *residual,
+                               LA::SparseMatrix                *tangent,
+                               std::vector<ChamberMeasures>    &measures,
+                               const bool with_vectors) const
+    {
+      const auto        &fe     = dof_handler->get_fe();
+      const unsigned int n_dofs = fe.n_dofs_per_cell();
+      const QGauss<2>    quadrature(degree + 1);
+      FEValues<2, 3>     fe_values(*mapping, fe, quadrature, wall_flags);
+      FreeSurfaceQuadrature free_surface(degree, degree + 2);
+      FEValues<2, 3>        support_values(*mapping,
+                                    fe,
+                                    Quadrature<2>(free_surface.support_points()),
+                                    update_values | update_quadrature_points);
+      const FEValuesExtractors::Vector displacement(0);
+      std::vector<Tensor<1, 3>> u_support(free_surface.support_points().size());
+      std::vector<double>       psi(u_support.size());
+
+      const unsigned int n = parameters.chambers.size();
+      measures.resize(n);
+      const MPI_Comm comm = dof_handler->get_communicator();
+      for (unsigned int c = 0; c < n; ++c)
+        {
+          auto &m = measures[c];
+          m.volume = m.liquid_volume = m.free_surface_area = m.wetted_area =
+            m.wall_area                                    = 0.;
+          if (with_vectors)
+            {
+              m.q.reinit(dof_handler->locally_owned_dofs(), comm);
+              if (loads[c].liquid)
+                m.q_liquid.reinit(dof_handler->locally_owned_dofs(), comm);
+            }
+        }
+
+      FullMatrix<double>                   cell_matrix(n_dofs, n_dofs);
+      Vector<double>                       cell_residual(n_dofs), cell_q(n_dofs),
+        cell_ql(n_dofs);
+      std::vector<types::global_dof_index> dof_indices(n_dofs);
+      std::vector<double>                  local_u(n_dofs);
+
+      for (const auto &cell : dof_handler->active_cell_iterators())
+        {
+          if (!cell->is_locally_owned())
+            continue;
+          const auto &walls = walls_of(cell->material_id());
+          if (walls.empty())
+            continue;
+          fe_values.reinit(cell);
+          cell->get_dof_indices(dof_indices);
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            local_u[i] = u[dof_indices[i]];
+          const auto [x_mean, n_mean] = cell_centre_and_normal(fe_values);
+          cell_matrix                 = 0;
+          cell_residual               = 0;
+          bool support_ready          = false;
+
+          for (const auto &[c, rs] : walls)
+            {
+              const double s = wall_sign(
+                geometry, parameters.chambers[c], rs, x_mean, n_mean);
+              const ChamberLoad &load = loads[c];
+              cell_q                  = 0;
+              CellIntegrals out;
+              out.matrix   = tangent ? &cell_matrix : nullptr;
+              out.residual = residual ? &cell_residual : nullptr;
+              out.q        = with_vectors ? &cell_q : nullptr;
+              integrate(fe_values,
+                        local_u,
+                        s,
+                        load,
+                        false,
+                        unit_gravity,
+                        gravity_magnitude,
+                        out);
+              if (load.liquid)
+                {
+                  if (!support_ready)
+                    {
+                      support_values.reinit(cell);
+                      support_values[displacement].get_function_values(
+                        u, u_support);
+                      support_ready = true;
+                    }
+                  for (unsigned int k = 0; k < psi.size(); ++k)
+                    psi[k] = height(support_values.quadrature_point(k)
+                                    + u_support[k]) -
+                             load.level;
+                  cell_ql       = 0;
+                  out.q         = with_vectors ? &cell_ql : nullptr;
+                  const auto at = free_surface.classify(psi);
+                  if (at == FreeSurfaceQuadrature::Location::wet)
+                    integrate(fe_values,
+                              local_u,
+                              s,
+                              load,
+                              true,
+                              unit_gravity,
+                              gravity_magnitude,
+                              out);
+                  else if (at == FreeSurfaceQuadrature::Location::cut)
+                    {
+                      FEValues<2, 3> cut_values(*mapping,
+                                                fe,
+                                                free_surface.wet_quadrature(),
+                                                wall_flags);
+                      cut_values.reinit(cell);
+                      integrate(cut_values,
+                                local_u,
+                                s,
+                                load,
+                                true,
+                                unit_gravity,
+                                gravity_magnitude,
+                                out);
+                    }
+                  if (with_vectors && at != FreeSurfaceQuadrature::Location::dry)
+                    constraints.distribute_local_to_global(cell_ql,
+                                                           dof_indices,
+                                                           measures[c].q_liquid);
+                }
+              auto &m = measures[c];
+              m.volume += out.volume;
+              m.wall_area += out.area;
+              m.liquid_volume += out.liquid_volume;
+              m.free_surface_area += out.free_surface;
+              m.wetted_area += out.wetted;
+              if (with_vectors)
+                constraints.distribute_local_to_global(cell_q,
+                                                       dof_indices,
+                                                       m.q);
+            }
+          if (tangent && residual)
+            constraints.distribute_local_to_global(
+              cell_matrix, cell_residual, dof_indices, *tangent, *residual);
+          else if (tangent)
+            constraints.distribute_local_to_global(cell_matrix,
+                                                   dof_indices,
+                                                   *tangent);
+          else if (residual)
+            constraints.distribute_local_to_global(cell_residual,
+                                                   dof_indices,
+                                                   *residual);
+        }
+
+      for (unsigned int c = 0; c < n; ++c)
+        {
+          auto &m = measures[c];
+          m.volume = Utilities::MPI::sum(m.volume, comm);
+          m.wall_area = Utilities::MPI::sum(m.wall_area, comm);
+          m.liquid_volume = Utilities::MPI::sum(m.liquid_volume, comm);
+          m.free_surface_area = Utilities::MPI::sum(m.free_surface_area, comm);
+          m.wetted_area = Utilities::MPI::sum(m.wetted_area, comm);
+          if (with_vectors)
+            {
+              m.q.compress(VectorOperation::add);
+              if (loads[c].liquid)
+                m.q_liquid.compress(VectorOperation::add);
+            }
+        }
+      if (residual)
+        residual->compress(VectorOperation::add);
+      if (tangent)
+        tangent->compress(VectorOperation::add);
+    }
+
+    std::pair<double, double>
+    ChamberAssembler::liquid_volume(const LA::Vector  &u,
+                                    const unsigned int c,
+                                    const double       level) const
+    {
+      const auto        &fe     = dof_handler->get_fe();
+      const unsigned int n_dofs = fe.n_dofs_per_cell();
+      const QGauss<2>    quadrature(degree + 1);
+      FEValues<2, 3>     fe_values(*mapping, fe, quadrature, wall_flags);
+      FreeSurfaceQuadrature free_surface(degree, degree + 2);
+      FEValues<2, 3>        support_values(*mapping,
+                                    fe,
+                                    Quadrature<2>(free_surface.support_points()),
+                                    update_values | update_quadrature_points);
+      const FEValuesExtractors::Vector displacement(0);
+      std::vector<Tensor<1, 3>> u_support(free_surface.support_points().size());
+      std::vector<double>       psi(u_support.size());
+      std::vector<types::global_dof_index> dof_indices(n_dofs);
+      std::vector<double>                  local_u(n_dofs);
+      ChamberLoad                          load;
+      load.liquid  = true;
+      load.level   = level;
+      load.density = parameters.chambers[c].density;
+      CellIntegrals out;
+
+      for (const auto &cell : dof_handler->active_cell_iterators())
+        {
+          if (!cell->is_locally_owned())
+            continue;
+          for (const auto &[chamber, rs] : walls_of(cell->material_id()))
+            {
+              if (chamber != c)
+                continue;
+              support_values.reinit(cell);
+              support_values[displacement].get_function_values(u, u_support);
+              for (unsigned int k = 0; k < psi.size(); ++k)
+                psi[k] =
+                  height(support_values.quadrature_point(k) + u_support[k]) -
+                  level;
+              const auto at = free_surface.classify(psi);
+              if (at == FreeSurfaceQuadrature::Location::dry)
+                continue;
+              fe_values.reinit(cell);
+              cell->get_dof_indices(dof_indices);
+              for (unsigned int i = 0; i < n_dofs; ++i)
+                local_u[i] = u[dof_indices[i]];
+              const auto [x_mean, n_mean] = cell_centre_and_normal(fe_values);
+              const double s              = wall_sign(
+                geometry, parameters.chambers[c], rs, x_mean, n_mean);
+              if (at == FreeSurfaceQuadrature::Location::wet)
+                integrate(fe_values,
+                          local_u,
+                          s,
+                          load,
+                          true,
+                          unit_gravity,
+                          gravity_magnitude,
+                          out);
+              else
+                {
+                  FEValues<2, 3> cut_values(*mapping,
+                                            fe,
+                                            free_surface.wet_quadrature(),
+                                            wall_flags);
+                  cut_values.reinit(cell);
+                  integrate(cut_values,
+                            local_u,
+                            s,
+                            load,
+                            true,
+                            unit_gravity,
+                            gravity_magnitude,
+                            out);
+                }
+            }
+        }
+      const MPI_Comm comm = dof_handler->get_communicator();
+      return {Utilities::MPI::sum(out.liquid_volume, comm),
+              Utilities::MPI::sum(out.free_surface, comm)};
+    }
+
+    std::pair<double, double>
+    ChamberAssembler::height_range(const LA::Vector  &u,
+                                   const unsigned int c) const
+    {
+      const auto                      &fe = dof_handler->get_fe();
+      FEValues<2, 3>                   values(*mapping,
+                            fe,
+                            Quadrature<2>(fe.base_element(0).get_unit_support_points()),
+                            update_values | update_quadrature_points);
+      const FEValuesExtractors::Vector displacement(0);
+      std::vector<Tensor<1, 3>>        u_q(values.n_quadrature_points);
+      double lo = std::numeric_limits<double>::max(), hi = -lo;
+      for (const auto &cell : dof_handler->active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto &[chamber, rs] : walls_of(cell->material_id()))
+            if (chamber == c)
+              {
+                values.reinit(cell);
+                values[displacement].get_function_values(u, u_q);
+                for (unsigned int k = 0; k < u_q.size(); ++k)
+                  {
+                    const double z = height(values.quadrature_point(k) + u_q[k]);
+                    lo             = std::min(lo, z);
+                    hi             = std::max(hi, z);
+                  }
+              }
+      const MPI_Comm comm = dof_handler->get_communicator();
+      return {Utilities::MPI::min(lo, comm), Utilities::MPI::max(hi, comm)};
+    }
+
+    ChamberCellData
+    ChamberAssembler::cell_data(const LA::Vector               &u,
+                                const std::vector<ChamberLoad> &loads) const
+    {
+      const auto     &fe = dof_handler->get_fe();
+      const QGauss<2> quadrature(degree + 1);
+      FEValues<2, 3>  fe_values(*mapping, fe, quadrature, wall_flags);
+      const FEValuesExtractors::Vector displacement(0);
+      std::vector<Tensor<1, 3>>        u_q(quadrature.size());
+      const auto     &tria = dof_handler->get_triangulation();
+      ChamberCellData data;
+      data.chamber.assign(tria.n_active_cells(), 0.);
+      data.wetted.assign(tria.n_active_cells(), 0.);
+      data.pressure.assign(tria.n_active_cells(), 0.);
+      for (const auto &cell : dof_handler->active_cell_iterators())
+        {
+          if (!cell->is_locally_owned())
+            continue;
+          const auto &walls = walls_of(cell->material_id());
+          if (walls.empty())
+            continue;
+          fe_values.reinit(cell);
+          fe_values[displacement].get_function_values(u, u_q);
+          const auto   index = cell->active_cell_index();
+          unsigned int n_wet = 0;
+          double       p_net = 0.;
+          data.chamber[index] = walls.front().first + 1;
+          const auto [x_mean, n_mean] = cell_centre_and_normal(fe_values);
+          const double s_first        = wall_sign(geometry,
+                                           parameters.chambers[walls.front().first],
+                                           walls.front().second,
+                                           x_mean,
+                                           n_mean);
+          for (const auto &[c, rs] : walls)
+            for (unsigned int q = 0; q < quadrature.size(); ++q)
+              {
+                const double s = wall_sign(
+                  geometry, parameters.chambers[c], rs, x_mean, n_mean);
+                const double depth =
+                  loads[c].level -
+                  height(fe_values.quadrature_point(q) + u_q[q]);
+                double p = loads[c].gas_pressure;
+                if (loads[c].liquid && depth > 0.)
+                  {
+                    ++n_wet;
+                    p += loads[c].density * gravity_magnitude * depth;
+                  }
+                // Net pressure on the side the cell's first chamber sees.
+                p_net += s * s_first * p / quadrature.size();
+              }
+          data.wetted[index]   = double(n_wet) / quadrature.size();
+          data.pressure[index] = p_net;
+        }
+      return data;
+    }
+  } // namespace chambers
+} // namespace pneuma

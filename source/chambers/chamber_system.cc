@@ -1,0 +1,605 @@
+#include <pneuma/chambers/chamber_system.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace pneuma
+{
+  namespace chambers
+  {
+    namespace
+    {
+      double
+      curve(const Functions::ParsedFunction<3> &f, const double t)
+      {
+        auto &g = const_cast<Functions::ParsedFunction<3> &>(f);
+        g.set_time(t);
+        return g.value(Point<3>());
+      }
+
+      const AffineConstraints<double> &
+      no_constraints()
+      {
+        static AffineConstraints<double> none;
+        return none;
+      }
+    } // namespace
+
+    ChamberSystem::ChamberSystem(const ChamberParameters &parameters,
+                                 const ChamberAssembler  &assembler)
+      : parameters(parameters)
+      , assembler(assembler)
+    {
+    }
+
+    bool
+    ChamberSystem::pressure_controlled(const Group &g) const
+    {
+      return parameters.chambers[g.leader].control == GasControl::pressure &&
+             !g.sealed;
+    }
+
+    double
+    ChamberSystem::prescribed_amount(const Group &g) const
+    {
+      if (g.sealed ||
+          parameters.chambers[g.leader].control == GasControl::pressure)
+        return g.amount;
+      return curve(*parameters.chambers[g.leader].amount, time) * g.V0;
+    }
+
+    std::pair<double, double>
+    ChamberSystem::gas_law(const Group &g, const double V_gas) const
+    {
+      const GasLaw &law    = parameters.chambers[g.leader].gas_law;
+      const double  amount = prescribed_amount(g);
+      return {law.pressure(V_gas, amount, parameters.ambient_pressure, g.old),
+              law.pressure_derivative(V_gas,
+                                      amount,
+                                      parameters.ambient_pressure,
+                                      g.old)};
+    }
+
+    void
+    ChamberSystem::group_measures(const Group                         &g,
+                                  const std::vector<ChamberMeasures> &m,
+                                  double                             &V,
+                                  double                             &V_l,
+                                  double                             &A_fs,
+                                  double &wetted) const
+    {
+      V = V_l = A_fs = wetted = 0.;
+      for (const auto c : g.members)
+        {
+          V += m[c].volume;
+          V_l += m[c].liquid_volume;
+          A_fs += m[c].free_surface_area;
+          wetted += m[c].wetted_area;
+        }
+    }
+
+    std::vector<ChamberLoad>
+    ChamberSystem::loads(const Vector<double> &border) const
+    {
+      std::vector<ChamberLoad> result(parameters.chambers.size());
+      for (const auto &g : groups)
+        for (const auto c : g.members)
+          {
+            ChamberLoad &load = result[c];
+            load.density      = parameters.chambers[g.leader].density;
+            if (g.gas)
+              load.gas_pressure = border[g.p_index] * unknown_scale[g.p_index];
+            load.liquid = g.liquid && !g.empty;
+            if (g.liquid)
+              load.level = border[g.h_index] * unknown_scale[g.h_index];
+          }
+      return result;
+    }
+
+    std::vector<ChamberLoad>
+    ChamberSystem::converged_loads() const
+    {
+      return loads(pack());
+    }
+
+    Vector<double>
+    ChamberSystem::pack() const
+    {
+      Vector<double> border(n_total);
+      for (const auto &g : groups)
+        {
+          if (g.gas)
+            border[g.p_index] = g.p / unknown_scale[g.p_index];
+          if (g.liquid)
+            border[g.h_index] = g.h / unknown_scale[g.h_index];
+        }
+      return border;
+    }
+
+    void
+    ChamberSystem::unpack(const Vector<double> &border)
+    {
+      for (auto &g : groups)
+        {
+          if (g.gas)
+            g.p = border[g.p_index] * unknown_scale[g.p_index];
+          if (g.liquid)
+            g.h = border[g.h_index] * unknown_scale[g.h_index];
+        }
+    }
+
+    void
+    ChamberSystem::initialize(const LA::Vector &u, const double t)
+    {
+      const unsigned int n = parameters.chambers.size();
+      groups.clear();
+      group_of.assign(n, 0);
+      n_total = 0;
+      for (unsigned int c = 0; c < n; ++c)
+        {
+          const auto &def = parameters.chambers[c];
+          if (def.filling == Filling::connected)
+            {
+              const unsigned int gi = group_of[def.connected_to];
+              groups[gi].members.push_back(c);
+              group_of[c] = gi;
+              continue;
+            }
+          Group g;
+          g.leader  = c;
+          g.members = {c};
+          g.liquid  = def.has_liquid();
+          g.gas     = def.has_gas();
+          if (g.liquid)
+            g.h_index = n_total++;
+          if (g.gas)
+            g.p_index = n_total++;
+          group_of[c] = groups.size();
+          groups.push_back(g);
+        }
+      unknown_scale.assign(n_total, 1.);
+      residual_scale.assign(n_total, 1.);
+      time = t;
+
+      std::vector<ChamberMeasures> m;
+      assembler.assemble(u,
+                         no_constraints(),
+                         std::vector<ChamberLoad>(n),
+                         nullptr,
+                         nullptr,
+                         m,
+                         false);
+      for (auto &g : groups)
+        {
+          double V, V_l, A, w;
+          group_measures(g, m, V, V_l, A, w);
+          g.V0 = V;
+          if (g.liquid)
+            {
+              const std::string error = predict_level(g, u);
+              AssertThrow(error.empty(), ExcMessage(error));
+            }
+          if (!g.gas)
+            continue;
+          const auto  &def   = parameters.chambers[g.leader];
+          const double p_a   = parameters.ambient_pressure;
+          double       V_gas = V;
+          if (g.liquid && !g.empty)
+            V_gas -= assembler.liquid_volume(u, g.leader, g.h).first;
+          if (def.control == GasControl::pressure)
+            {
+              g.p      = curve(*def.pressure, t);
+              g.amount = def.gas_law.amount(g.p + p_a, V_gas, p_a);
+            }
+          else if (def.control == GasControl::amount)
+            {
+              g.amount = curve(*def.amount, t) * g.V0;
+              g.p = p_a * std::pow(g.amount / V_gas, def.gas_law.exponent()) -
+                    p_a;
+            }
+          else
+            {
+              g.p      = 0.;
+              g.amount = V_gas;
+            }
+          g.old.pressure = g.p + p_a;
+          g.old.volume   = V_gas;
+          g.old.amount   = g.amount;
+        }
+      record(u);
+    }
+
+    std::string
+    ChamberSystem::predict_level(Group &g, const LA::Vector &u)
+    {
+      const auto  &def    = parameters.chambers[g.leader];
+      const double target = curve(*def.liquid_volume, time);
+      double       lo = std::numeric_limits<double>::max(), hi = -lo;
+      for (const auto c : g.members)
+        {
+          const auto [a, b] = assembler.height_range(u, c);
+          lo                = std::min(lo, a);
+          hi                = std::max(hi, b);
+        }
+      const auto volume = [&](const double h) {
+        std::pair<double, double> sum{0., 0.};
+        for (const auto c : g.members)
+          {
+            const auto v = assembler.liquid_volume(u, c, h);
+            sum.first += v.first;
+            sum.second += v.second;
+          }
+        return sum;
+      };
+      if (target <= 0.)
+        {
+          g.empty = true;
+          g.h     = lo - 1e-9 * (hi - lo);
+          return "";
+        }
+      g.empty = false;
+      double V_hi = volume(hi).first;
+      if (def.open)
+        while (V_hi < target)
+          {
+            hi += (hi - lo);
+            V_hi = volume(hi).first;
+          }
+      else if (V_hi * (1. - 1e-9) <= target)
+        {
+          std::ostringstream msg;
+          msg << def.path << ": the liquid volume " << target
+              << " m^3 at t = " << time << " does not fit: the chamber holds "
+              << V_hi << " m^3"
+              << (def.has_gas() ? " and its gas needs room" : "");
+          return msg.str();
+        }
+      double h = (g.h > lo && g.h < hi) ? g.h : 0.5 * (lo + hi);
+      double a = lo, b = hi;
+      for (unsigned int it = 0; it < 100; ++it)
+        {
+          const auto [V, A] = volume(h);
+          const double f    = V - target;
+          if (std::abs(f) <= 1e-13 * target)
+            break;
+          (f < 0. ? a : b) = h;
+          double next = (A > 0.) ? h - f / A : 0.5 * (a + b);
+          if (!(next > a && next < b))
+            next = 0.5 * (a + b);
+          h = next;
+          if (b - a <= 1e-14 * (hi - lo))
+            break;
+        }
+      g.h = h;
+      return "";
+    }
+
+    std::string
+    ChamberSystem::begin_step(const LA::Vector &u, const double t)
+    {
+      time = t;
+      for (auto &g : groups)
+        if (g.liquid)
+          {
+            const std::string error = predict_level(g, u);
+            if (!error.empty())
+              return error;
+          }
+
+      // Measures with vectors at the predicted levels.
+      const unsigned int           n = parameters.chambers.size();
+      std::vector<ChamberMeasures> m;
+      unknown_scale.assign(n_total, 1.);
+      assembler.assemble(
+        u, no_constraints(), loads(pack()), nullptr, nullptr, m, true);
+      force_reference = 0.;
+      const double p_a = parameters.ambient_pressure;
+      const double g_magnitude = parameters.gravity.norm();
+      for (auto &g : groups)
+        {
+          double V, V_l, A, w;
+          group_measures(g, m, V, V_l, A, w);
+          LA::Vector q(m[g.leader].q);
+          for (unsigned int k = 1; k < g.members.size(); ++k)
+            q += m[g.members[k]].q;
+          const double q_norm = std::max(q.l2_norm(), 1e-300);
+          const auto  &def    = parameters.chambers[g.leader];
+          double       p_ref  = 0.;
+          if (g.gas)
+            {
+              if (pressure_controlled(g))
+                g.p = curve(*def.pressure, t);
+              else if (def.control != GasControl::volume)
+                g.p = gas_law(g, V - V_l).first - p_a;
+              p_ref = std::max(std::abs(g.p), 1e-2 * p_a);
+              unknown_scale[g.p_index] = 1e3 * p_ref;
+              residual_scale[g.p_index] =
+                def.control == GasControl::volume && !g.sealed ?
+                  q_norm * p_ref / std::max(V, 1e-300) :
+                  q_norm;
+            }
+          if (g.liquid)
+            {
+              double lo = std::numeric_limits<double>::max(), hi = -lo;
+              for (const auto c : g.members)
+                {
+                  const auto [a, b] = assembler.height_range(u, c);
+                  lo                = std::min(lo, a);
+                  hi                = std::max(hi, b);
+                }
+              const double depth_pressure =
+                def.density * g_magnitude * std::max(hi - lo, g.h - lo);
+              p_ref = std::max(p_ref, depth_pressure);
+              const double V_ref =
+                std::max({curve(*def.liquid_volume, t), std::abs(V), 1e-300});
+              unknown_scale[g.h_index]  = 1.;
+              residual_scale[g.h_index] = q_norm * depth_pressure / V_ref;
+            }
+          force_reference += q_norm * p_ref;
+        }
+      return "";
+    }
+
+    void
+    ChamberSystem::evaluate(const Vector<double>               &border,
+                            const std::vector<ChamberMeasures> &m,
+                            Vector<double>                     &residual)
+    {
+      residual.reinit(n_total);
+      B.resize(n_total);
+      C.resize(n_total);
+      has_B.assign(n_total, false);
+      has_C.assign(n_total, false);
+      D.reinit(n_total, n_total);
+      const double p_a         = parameters.ambient_pressure;
+      const double g_magnitude = parameters.gravity.norm();
+      for (const auto &g : groups)
+        {
+          const auto &def = parameters.chambers[g.leader];
+          double      V, V_l, A_fs, w;
+          group_measures(g, m, V, V_l, A_fs, w);
+          // Group vectors q and q_l.
+          LA::Vector q(m[g.leader].q);
+          for (unsigned int k = 1; k < g.members.size(); ++k)
+            q += m[g.members[k]].q;
+          const bool with_liquid = g.liquid && !g.empty;
+          LA::Vector q_l;
+          if (with_liquid)
+            {
+              q_l = m[g.leader].q_liquid;
+              for (unsigned int k = 1; k < g.members.size(); ++k)
+                q_l += m[g.members[k]].q_liquid;
+            }
+
+          if (g.gas)
+            {
+              const unsigned int j = g.p_index;
+              const double       p = border[j] * unknown_scale[j];
+              B[j]                 = q;
+              B[j] *= -1.;
+              has_B[j] = true;
+              double r = 0.;
+              if (pressure_controlled(g))
+                {
+                  r       = p - curve(*def.pressure, time);
+                  D(j, j) = 1.;
+                }
+              else if (def.control == GasControl::volume && !g.sealed)
+                {
+                  r        = V - curve(*def.volume, time) * g.V0;
+                  C[j]     = q;
+                  has_C[j] = true;
+                }
+              else
+                {
+                  const auto [p_abs, dp] = gas_law(g, V - V_l);
+                  r                      = p - (p_abs - p_a);
+                  C[j]                   = q;
+                  if (with_liquid)
+                    C[j] -= q_l;
+                  C[j] *= -dp;
+                  has_C[j] = true;
+                  D(j, j)  = 1.;
+                  if (with_liquid)
+                    D(j, g.h_index) = dp * A_fs;
+                }
+              residual[j] = r * residual_scale[j];
+            }
+          if (g.liquid)
+            {
+              const unsigned int j = g.h_index;
+              if (!with_liquid)
+                {
+                  D(j, j)     = 1.;
+                  residual[j] = 0.;
+                  continue;
+                }
+              B[j] = q_l;
+              B[j] *= -def.density * g_magnitude;
+              has_B[j] = true;
+              C[j]     = q_l;
+              has_C[j] = true;
+              D(j, j)  = A_fs;
+              residual[j] =
+                (V_l - curve(*def.liquid_volume, time)) * residual_scale[j];
+            }
+        }
+    }
+
+    void
+    ChamberSystem::solve(solvers::LinearSolver          &solver,
+                         const LA::SparseMatrix         &K,
+                         const solvers::BorderedVector &rhs,
+                         solvers::BorderedVector       &dx) const
+    {
+      const unsigned int  m = n_total;
+      std::vector<double> r_g(m), dl(m, 0.);
+      for (unsigned int j = 0; j < m; ++j)
+        r_g[j] = rhs.border[j] / residual_scale[j];
+
+      // Unknowns whose constraint does not involve u or other unknowns.
+      std::vector<bool> decoupled(m, false);
+      for (unsigned int j = 0; j < m; ++j)
+        {
+          bool only_diagonal = !has_C[j] && D(j, j) != 0.;
+          for (unsigned int k = 0; k < m; ++k)
+            if (k != j && D(j, k) != 0.)
+              only_diagonal = false;
+          decoupled[j] = only_diagonal;
+        }
+      LA::Vector rhs_u(rhs.field);
+      for (unsigned int j = 0; j < m; ++j)
+        if (decoupled[j])
+          {
+            dl[j] = r_g[j] / D(j, j);
+            if (has_B[j])
+              rhs_u.add(-dl[j], B[j]);
+          }
+
+      std::vector<unsigned int> coupled;
+      for (unsigned int j = 0; j < m; ++j)
+        if (!decoupled[j])
+          coupled.push_back(j);
+
+      LA::Vector y0(rhs.field);
+      y0 = 0.;
+      solver.solve(K, y0, rhs_u);
+      if (!coupled.empty())
+        {
+          const unsigned int      n_c = coupled.size();
+          std::vector<LA::Vector> Y(n_c);
+          for (unsigned int a = 0; a < n_c; ++a)
+            {
+              Y[a].reinit(rhs.field);
+              if (has_B[coupled[a]])
+                solver.solve(K, Y[a], B[coupled[a]]);
+            }
+          FullMatrix<double> S(n_c, n_c);
+          Vector<double>     s_rhs(n_c), x(n_c);
+          for (unsigned int a = 0; a < n_c; ++a)
+            {
+              const unsigned int i = coupled[a];
+              s_rhs[a]             = r_g[i];
+              for (unsigned int k = 0; k < m; ++k)
+                if (decoupled[k])
+                  s_rhs[a] -= D(i, k) * dl[k];
+              if (has_C[i])
+                s_rhs[a] -= C[i] * y0;
+              for (unsigned int b = 0; b < n_c; ++b)
+                {
+                  S(a, b) = D(i, coupled[b]);
+                  if (has_C[i])
+                    S(a, b) -= C[i] * Y[b];
+                }
+            }
+          S.gauss_jordan();
+          S.vmult(x, s_rhs);
+          for (unsigned int a = 0; a < n_c; ++a)
+            {
+              dl[coupled[a]] = x[a];
+              y0.add(-x[a], Y[a]);
+            }
+        }
+      dx.field = y0;
+      dx.border.reinit(m);
+      for (unsigned int j = 0; j < m; ++j)
+        dx.border[j] = dl[j] / unknown_scale[j];
+    }
+
+    void
+    ChamberSystem::vmult(const LA::SparseMatrix         &K,
+                         const solvers::BorderedVector &x,
+                         solvers::BorderedVector       &y) const
+    {
+      K.vmult(y.field, x.field);
+      y.border.reinit(n_total);
+      for (unsigned int j = 0; j < n_total; ++j)
+        if (has_B[j])
+          y.field.add(x.border[j] * unknown_scale[j], B[j]);
+      for (unsigned int j = 0; j < n_total; ++j)
+        {
+          double v = has_C[j] ? C[j] * x.field : 0.;
+          for (unsigned int k = 0; k < n_total; ++k)
+            v += D(j, k) * x.border[k] * unknown_scale[k];
+          y.border[j] = v * residual_scale[j];
+        }
+    }
+
+    void
+    ChamberSystem::commit_step(const LA::Vector         &u,
+                               const double              t,
+                               const ConditionalOStream &out)
+    {
+      const double p_a = parameters.ambient_pressure;
+      record(u);
+      for (auto &g : groups)
+        {
+          if (!g.gas)
+            continue;
+          const auto  &def   = parameters.chambers[g.leader];
+          const auto  &rep   = chamber_reports[g.leader];
+          double       V_gas = 0.;
+          for (const auto c : g.members)
+            V_gas += chamber_reports[c].gas_volume;
+          if (pressure_controlled(g) && def.seal_time >= 0. &&
+              t >= def.seal_time - 1e-12)
+            {
+              g.sealed = true;
+              g.amount = def.gas_law.amount(g.p + p_a, V_gas, p_a);
+              out << "  " << def.path << " sealed at t = " << t
+                  << ": p = " << g.p << " Pa gauge, gas volume " << V_gas
+                  << " m^3, amount " << g.amount << " m^3 at ambient pressure"
+                  << std::endl;
+            }
+          else if (!g.sealed && def.control != GasControl::amount)
+            g.amount = def.gas_law.amount(g.p + p_a, V_gas, p_a);
+          else if (!g.sealed)
+            g.amount = prescribed_amount(g);
+          (void)rep;
+          g.old.pressure = g.p + p_a;
+          g.old.volume   = V_gas;
+          g.old.amount   = g.amount;
+        }
+      record(u);
+    }
+
+    void
+    ChamberSystem::record(const LA::Vector &u)
+    {
+      const unsigned int           n = parameters.chambers.size();
+      std::vector<ChamberMeasures> m;
+      assembler.assemble(
+        u, no_constraints(), converged_loads(), nullptr, nullptr, m, false);
+      chamber_reports.assign(n, ChamberReport());
+      const double p_a = parameters.ambient_pressure;
+      for (const auto &g : groups)
+        {
+          double V_gas_group = 0.;
+          for (const auto c : g.members)
+            V_gas_group += m[c].volume - m[c].liquid_volume;
+          const auto &def = parameters.chambers[g.leader];
+          for (const auto c : g.members)
+            {
+              ChamberReport &r = chamber_reports[c];
+              r.volume         = parameters.chambers[c].open ? 0. : m[c].volume;
+              r.liquid_volume  = m[c].liquid_volume;
+              r.gas_volume =
+                g.gas ? m[c].volume - m[c].liquid_volume : 0.;
+              r.wetted_area = m[c].wetted_area;
+              if (g.liquid)
+                r.level = g.h;
+              if (g.gas)
+                {
+                  r.pressure          = g.p;
+                  r.absolute_pressure = g.p + p_a;
+                  r.gas_amount        = g.amount;
+                  r.pv_kappa =
+                    r.absolute_pressure *
+                    std::pow(V_gas_group, def.gas_law.exponent());
+                }
+            }
+        }
+    }
+  } // namespace chambers
+} // namespace pneuma
