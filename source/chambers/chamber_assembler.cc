@@ -248,7 +248,17 @@ namespace pneuma
             gap[d] = Utilities::MPI::sum(sum[c][d], comm);
           const double total = Utilities::MPI::sum(area[c], comm);
           if (def.open)
-            gap -= (gap * unit_gravity) * unit_gravity;
+            {
+              check_input(gap * unit_gravity > 0.,
+                          def.path + "/Regions",
+                          "the walls of an open tank must face out of the "
+                          "liquid, i.e. down along gravity (their area "
+                          "vectors sum to " +
+                            std::to_string(gap * unit_gravity) +
+                            " m^2 along gravity); flip them with a minus "
+                            "sign");
+              gap -= (gap * unit_gravity) * unit_gravity;
+            }
           if (gap.norm() > 1e-8 * total)
             {
               std::ostringstream msg;
@@ -341,14 +351,17 @@ namespace pneuma
               out.matrix   = tangent ? &cell_matrix : nullptr;
               out.residual = residual ? &cell_residual : nullptr;
               out.q        = with_vectors ? &cell_q : nullptr;
-              integrate(fe_values,
-                        local_u,
-                        s,
-                        load,
-                        false,
-                        unit_gravity,
-                        gravity_magnitude,
-                        out);
+              // Liquid-only chambers need the gas pass (volume, q) only
+              // for their measures, not in Newton's assemblies.
+              if (load.gas || !with_vectors)
+                integrate(fe_values,
+                          local_u,
+                          s,
+                          load,
+                          false,
+                          unit_gravity,
+                          gravity_magnitude,
+                          out);
               if (load.liquid)
                 {
                   if (!support_ready)
@@ -562,9 +575,9 @@ namespace pneuma
       std::vector<Tensor<1, 3>>        u_q(quadrature.size());
       const auto     &tria = dof_handler->get_triangulation();
       ChamberCellData data;
-      data.chamber.assign(tria.n_active_cells(), 0.);
-      data.wetted.assign(tria.n_active_cells(), 0.);
-      data.pressure.assign(tria.n_active_cells(), 0.);
+      data.chamber.reinit(tria.n_active_cells());
+      data.wetted.reinit(tria.n_active_cells());
+      data.pressure.reinit(tria.n_active_cells());
       for (const auto &cell : dof_handler->active_cell_iterators())
         {
           if (!cell->is_locally_owned())

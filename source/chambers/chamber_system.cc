@@ -88,6 +88,7 @@ namespace pneuma
           {
             ChamberLoad &load = result[c];
             load.density      = parameters.chambers[g.leader].density;
+            load.gas          = g.gas;
             if (g.gas)
               load.gas_pressure = border[g.p_index] * unknown_scale[g.p_index];
             load.liquid = g.liquid && !g.empty;
@@ -241,9 +242,10 @@ namespace pneuma
       g.empty = false;
       double V_hi = volume(hi).first;
       if (def.open)
-        while (V_hi < target)
+        for (double step = std::max(hi - lo, 1e-3); V_hi < target;
+             step *= 2.)
           {
-            hi += (hi - lo);
+            hi   = lo + step;
             V_hi = volume(hi).first;
           }
       else if (V_hi * (1. - 1e-9) <= target)
@@ -300,9 +302,12 @@ namespace pneuma
         {
           double V, V_l, A, w;
           group_measures(g, m, V, V_l, A, w);
-          LA::Vector q(m[g.leader].q);
+          // |q| (or |q_l| for a liquid alone): force per unit pressure.
+          LA::Vector q(g.gas || g.empty ? m[g.leader].q :
+                                          m[g.leader].q_liquid);
           for (unsigned int k = 1; k < g.members.size(); ++k)
-            q += m[g.members[k]].q;
+            q += g.gas || g.empty ? m[g.members[k]].q :
+                                    m[g.members[k]].q_liquid;
           const double q_norm = std::max(q.l2_norm(), 1e-300);
           const auto  &def    = parameters.chambers[g.leader];
           double       p_ref  = 0.;
@@ -360,9 +365,13 @@ namespace pneuma
           double      V, V_l, A_fs, w;
           group_measures(g, m, V, V_l, A_fs, w);
           // Group vectors q and q_l.
-          LA::Vector q(m[g.leader].q);
-          for (unsigned int k = 1; k < g.members.size(); ++k)
-            q += m[g.members[k]].q;
+          LA::Vector q;
+          if (g.gas)
+            {
+              q = m[g.leader].q;
+              for (unsigned int k = 1; k < g.members.size(); ++k)
+                q += m[g.members[k]].q;
+            }
           const bool with_liquid = g.liquid && !g.empty;
           LA::Vector q_l;
           if (with_liquid)

@@ -6,6 +6,7 @@
 #include <pneuma/chambers/free_surface_quadrature.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace pneuma
 {
@@ -57,13 +58,28 @@ namespace pneuma
                                                  const unsigned int n_points)
       : fe(degree)
       , points(fe.get_unit_support_points())
-      , generator(hp::QCollection<1>(QGauss<1>(n_points)))
+      , quadrature_1d(QGauss<1>(n_points))
+      , generator(quadrature_1d)
     {
     }
 
     FreeSurfaceQuadrature::Location
-    FreeSurfaceQuadrature::classify(const std::vector<double> &psi)
+    FreeSurfaceQuadrature::classify(const std::vector<double> &psi_in)
     {
+      // The generator (deal.II 9.4) fails on roots at or next to a
+      // vertex (e.g. a clamped rim exactly at the level): such values are
+      // moved off zero by a negligible amount, to the side of the other
+      // nodes, so that a cell touching the level at a vertex is not cut.
+      psi                   = psi_in;
+      const auto [lo0, hi0] = std::minmax_element(psi.begin(), psi.end());
+      const double tiny     = 1e-12 * std::max(*hi0 - *lo0, 1e-300);
+      double       others   = 0.;
+      for (const auto v : psi)
+        if (std::abs(v) >= tiny)
+          others += v;
+      for (auto &v : psi)
+        if (std::abs(v) < tiny)
+          v = others < 0. ? -tiny : tiny;
       const auto [lo, hi] = std::minmax_element(psi.begin(), psi.end());
       // A bilinear psi takes its extremes at the vertices; a higher-degree
       // one may dip between nodes, so near-zero cells go to the generator,

@@ -1,6 +1,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/mapping_q_cache.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/sparsity_tools.h>
 
@@ -89,7 +90,11 @@ namespace pneuma
     TimerOutput::Scope t(s.timer, "setup");
     s.geometry.create_triangulation(s.triangulation);
     s.fe      = std::make_unique<FESystem<2, 3>>(FE_Q<2, 3>(s.degree), 3);
-    s.mapping = std::make_unique<MappingQ<2, 3>>(s.degree);
+    // The mapped support points of every cell are computed once from the
+    // manifolds and cached: FEValues::reinit no longer calls the manifolds.
+    auto cache = std::make_unique<MappingQCache<2, 3>>(s.degree);
+    cache->initialize(MappingQ<2, 3>(s.degree), s.triangulation);
+    s.mapping = std::move(cache);
 
     // Every region a cell is in must have a valid material; every id
     // named in the input must exist in the mesh.

@@ -93,6 +93,16 @@ namespace pneuma
           *history << ",volume";
         for (unsigned int m = 0; m < output.monitor_points.size(); ++m)
           *history << ",m" << m << "_ux,m" << m << "_uy,m" << m << "_uz";
+        for (unsigned int c = 1; c <= chamber_parameters.chambers.size(); ++c)
+          for (const char *name : {"pressure",
+                                   "absolute_pressure",
+                                   "volume",
+                                   "gas_volume",
+                                   "liquid_volume",
+                                   "level",
+                                   "wetted_area",
+                                   "gas_amount"})
+            *history << ",c" << c << "_" << name;
         *history << "\n";
       }
   }
@@ -180,6 +190,11 @@ namespace pneuma
           *history << ',' << volume;
         for (const auto &u : monitors)
           *history << ',' << u[0] << ',' << u[1] << ',' << u[2];
+        for (const auto &c : chamber_system.reports())
+          *history << ',' << c.pressure << ',' << c.absolute_pressure << ','
+                   << c.volume << ',' << c.gas_volume << ',' << c.liquid_volume
+                   << ',' << c.level << ',' << c.wetted_area << ','
+                   << c.gas_amount;
         *history << std::endl;
       }
   }
@@ -209,6 +224,21 @@ namespace pneuma
       data_out.add_data_vector(fields.values[i],
                                fields.names[i],
                                DataOut<2, 3>::type_cell_data);
+    chambers::ChamberCellData chamber_cells;
+    if (!chamber_parameters.empty())
+      {
+        chamber_cells = chamber_assembler.cell_data(
+          ghosted, chamber_system.converged_loads());
+        data_out.add_data_vector(chamber_cells.chamber,
+                                 "chamber",
+                                 DataOut<2, 3>::type_cell_data);
+        data_out.add_data_vector(chamber_cells.wetted,
+                                 "wetted",
+                                 DataOut<2, 3>::type_cell_data);
+        data_out.add_data_vector(chamber_cells.pressure,
+                                 "chamber_pressure",
+                                 DataOut<2, 3>::type_cell_data);
+      }
     Vector<float> subdomain(triangulation.n_active_cells());
     subdomain = triangulation.locally_owned_subdomain();
     data_out.add_data_vector(subdomain, "subdomain");
@@ -237,6 +267,22 @@ namespace pneuma
     request.residual = &residual;
     request.external = &ext;
     assembler.assemble(ghosted, kinematic_constraints, request);
+    if (!chamber_parameters.empty())
+      {
+        // Chamber loads: -f into the residual, +f into the applied loads.
+        LA::Vector chamber_part(solution);
+        chamber_part = 0.;
+        std::vector<chambers::ChamberMeasures> measures;
+        chamber_assembler.assemble(ghosted,
+                                   kinematic_constraints,
+                                   chamber_system.converged_loads(),
+                                   &chamber_part,
+                                   nullptr,
+                                   measures,
+                                   false);
+        residual += chamber_part;
+        ext -= chamber_part;
+      }
     reaction.fill(0.);
     applied.fill(0.);
     // Component of each owned dof.
@@ -283,6 +329,21 @@ namespace pneuma
          << summary.reaction[1] << ", " << summary.reaction[2] << "],\n"
          << "  \"applied_load\": [" << summary.applied_load[0] << ", "
          << summary.applied_load[1] << ", " << summary.applied_load[2] << "],\n"
+         << "  \"chambers\": [";
+    for (unsigned int c = 0; c < summary.chambers.size(); ++c)
+      {
+        const auto &r = summary.chambers[c];
+        json << (c ? ",\n" : "\n") << "    {\"chamber\": " << c + 1
+             << ", \"pressure\": " << r.pressure
+             << ", \"absolute_pressure\": " << r.absolute_pressure
+             << ", \"volume\": " << r.volume
+             << ", \"gas_volume\": " << r.gas_volume
+             << ", \"liquid_volume\": " << r.liquid_volume
+             << ", \"level\": " << r.level
+             << ", \"wetted_area\": " << r.wetted_area
+             << ", \"gas_amount\": " << r.gas_amount << "}";
+      }
+    json << (summary.chambers.empty() ? "" : "\n  ") << "],\n"
          << "  \"monitor_points\": [";
     for (unsigned int m = 0; m < summary.monitor_displacements.size(); ++m)
       {
@@ -319,6 +380,13 @@ namespace pneuma
             const auto &u = summary.monitor_displacements[m];
             out << "monitor " << m << " u = " << u[0] << " " << u[1] << " "
                 << u[2] << "\n";
+          }
+        for (unsigned int c = 0; c < summary.chambers.size(); ++c)
+          {
+            const auto &r = summary.chambers[c];
+            out << "chamber " << c + 1 << " p = " << r.pressure
+                << " V = " << r.volume << " V_liquid = " << r.liquid_volume
+                << " level = " << r.level << "\n";
           }
       }
   }

@@ -29,6 +29,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/vector.h>
 
 #include <pneuma/chambers/chamber_parameters.h>
 #include <pneuma/core/linear_algebra.h>
@@ -46,7 +47,9 @@ namespace pneuma
     /// What acts on the walls of one chamber.
     struct ChamberLoad
     {
-      double gas_pressure = 0.; ///< gauge [Pa], on all walls
+      bool   gas          = true; ///< a gas acts (else the gas pass is
+                                  ///< skipped when only loads are needed)
+      double gas_pressure = 0.;   ///< gauge [Pa], on all walls
       bool   liquid       = false;
       double level        = 0.; ///< free-surface height h [m]
       double density      = 0.;
@@ -64,7 +67,7 @@ namespace pneuma
     /// Per-cell values for output.
     struct ChamberCellData
     {
-      std::vector<double> chamber, wetted, pressure;
+      Vector<float> chamber, wetted, pressure;
     };
 
     class ChamberAssembler

@@ -19,6 +19,7 @@
 
 #include <deal.II/base/quadrature.h>
 #include <deal.II/fe/fe_q.h>
+#include <deal.II/hp/q_collection.h>
 #include <deal.II/non_matching/quadrature_generator.h>
 
 #include <vector>
@@ -58,7 +59,7 @@ namespace pneuma
        * wet_quadrature() then holds the rule for its wetted part.
        */
       Location
-      classify(const std::vector<double> &psi);
+      classify(const std::vector<double> &psi_in);
 
       const Quadrature<2> &
       wet_quadrature() const
@@ -69,6 +70,9 @@ namespace pneuma
     private:
       FE_Q<2>                             fe;
       std::vector<Point<2>>               points;
+      std::vector<double>                 psi;
+      /// Must outlive the generator, which keeps a pointer to it.
+      hp::QCollection<1>                  quadrature_1d;
       NonMatching::QuadratureGenerator<2> generator;
     };
   } // namespace chambers
