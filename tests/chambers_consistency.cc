@@ -1,0 +1,168 @@
+// Chamber terms: consistency of the bordered Jacobian and the identities
+// of the fillings.
+// 1. The assembled bordered Jacobian (follower and hydrostatic stiffness,
+//    B = dR/d(p,h), C = dg/du, D = dg/d(p,h)) against central finite
+//    differences of the residual, at a perturbed state off equilibrium in
+//    the chamber unknowns too: gas with a closed amount, gas with
+//    prescribed volume, an open liquid tank and liquid + gas in a closed
+//    tube, on degree 1 and 2.
+// 2. Liquid + gas in the airbeam tube (gas amount doubled, then 0.15 m^3
+//    of water filled in, the free surface crossing cells in every step):
+//    Newton's quadratic rate; the gas law p V_gas^1.4 = p_a (2 V0)^1.4; the
+//    liquid volume; the vertical reaction equals the water weight.
+
+#include "test_tools.h"
+
+#include <cmath>
+
+namespace
+{
+  const pneuma_test::Settings sphere = {
+    {"Geometry/Type", "sphere"},
+    {"Geometry/Radius", "1"},
+    {"Geometry/Global refinements", "1"},
+    {"Materials/Region 0/Law", "neo-Hookean"},
+    {"Materials/Region 0/Shear modulus", "1e6"},
+    {"Chambers/Number of chambers", "1"},
+    {"Chambers/Chamber 1/Regions", "0"}};
+
+  const pneuma_test::Settings tank = {
+    {"Geometry/Type", "disc"},
+    {"Geometry/Radius", "0.5"},
+    {"Geometry/Global refinements", "2"},
+    {"Materials/Region 0/Young's modulus", "1e9"},
+    {"Boundary conditions/Fixed boundaries", "0: xyz"},
+    {"Chambers/Number of chambers", "1"},
+    {"Chambers/Chamber 1/Regions", "-0"},
+    {"Chambers/Chamber 1/Open", "true"},
+    {"Chambers/Chamber 1/Filling", "liquid"},
+    {"Chambers/Chamber 1/Liquid/Volume/Function expression", "0.05*t"}};
+
+  const pneuma_test::Settings tube = {
+    {"Geometry/Type", "closed cylinder"},
+    {"Geometry/Radius", "0.23"},
+    {"Geometry/Length", "2"},
+    {"Geometry/Global refinements", "2"},
+    {"Materials/Region 0/Young's modulus", "7.6e9"},
+    {"Materials/Region 1/Young's modulus", "7.6e9"},
+    {"Materials/Region 2/Young's modulus", "7.6e9"},
+    {"Chambers/Number of chambers", "1"},
+    {"Chambers/Chamber 1/Regions", "0, 1, 2"},
+    {"Chambers/Chamber 1/Filling", "liquid and gas"},
+    {"Chambers/Chamber 1/Gas/Control", "gas amount"},
+    {"Chambers/Chamber 1/Gas/Gas amount/Function expression", "2"},
+    {"Chambers/Chamber 1/Liquid/Volume/Function expression", "0.1*t"}};
+
+  bool
+  tangent_check(const std::string           &name,
+                pneuma_test::Settings        settings,
+                const unsigned int           degree,
+                const double                 amplitude)
+  {
+    settings.push_back(
+      {"Discretisation/Polynomial degree", std::to_string(degree)});
+    settings.push_back({"Output/Quiet", "true"});
+    dealii::ParameterHandler prm;
+    pneuma::Simulator::declare_parameters(prm);
+    pneuma_test::apply(prm, settings);
+    pneuma::Simulator simulator(MPI_COMM_WORLD);
+    simulator.parse_parameters(prm);
+    simulator.setup();
+    const auto check = simulator.check_tangent(1., amplitude, 1e-7);
+    const bool pass  = check.relative_error < 1e-6;
+    std::printf("bordered Jacobian vs finite differences, %s, degree %u: %s\n",
+                name.c_str(),
+                degree,
+                pass ? "relative error < 1e-6" : "FAIL");
+    if (!pass)
+      std::printf("  relative error %.3e\n", check.relative_error);
+    return pass;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  bool                                     ok = true;
+
+  auto gas_amount = sphere;
+  gas_amount.push_back({"Chambers/Chamber 1/Gas/Control", "gas amount"});
+  gas_amount.push_back(
+    {"Chambers/Chamber 1/Gas/Gas amount/Function expression", "1.5"});
+  auto volume = sphere;
+  volume.push_back({"Chambers/Chamber 1/Gas/Control", "volume"});
+  volume.push_back({"Chambers/Chamber 1/Gas/Volume/Function expression",
+                    "1.3"});
+  for (const unsigned int degree : {1u, 2u})
+    {
+      ok = tangent_check("gas, closed amount", gas_amount, degree, 0.05) && ok;
+      ok = tangent_check("gas, prescribed volume", volume, degree, 0.05) && ok;
+      ok = tangent_check("liquid, open tank", tank, degree, 0.02) && ok;
+      ok = tangent_check("liquid and gas", tube, degree, 0.005) && ok;
+    }
+
+  // Liquid + gas filling of the airbeam tube.
+  const auto s = pneuma_test::run(
+    {{"Geometry/Type", "closed cylinder"},
+     {"Geometry/Radius", "0.23"},
+     {"Geometry/Length", "2"},
+     {"Geometry/Global refinements", "3"},
+     {"Materials/Region 0/Thickness", "1e-3"},
+     {"Materials/Region 0/Young's modulus", "7.6e9"},
+     {"Materials/Region 1/Thickness", "1e-2"},
+     {"Materials/Region 1/Young's modulus", "2.1e11"},
+     {"Materials/Region 2/Thickness", "1e-2"},
+     {"Materials/Region 2/Young's modulus", "2.1e11"},
+     {"Boundary conditions/Rigid regions", "1, 2"},
+     {"Boundary conditions/Fixed points",
+      "0,0,0: xyz; 2,0,0: yz; 0.05,0,0.23: y"},
+     {"Chambers/Number of chambers", "1"},
+     {"Chambers/Chamber 1/Regions", "0, 1, 2"},
+     {"Chambers/Chamber 1/Filling", "liquid and gas"},
+     {"Chambers/Chamber 1/Gas/Control", "gas amount"},
+     {"Chambers/Chamber 1/Gas/Gas amount/Function expression",
+      "1 + min(t, 1)"},
+     {"Chambers/Chamber 1/Liquid/Volume/Function expression",
+      "0.15*max(t - 1, 0)"},
+     {"Load stepping/Stage end times", "1, 2"},
+     {"Load stepping/Initial increment", "0.25"},
+     {"Load stepping/Maximum increment", "0.25"},
+     {"Newton/Residual tolerance", "1e-12"},
+     {"Output/Directory", "output-liquid-gas"}});
+  ok = ok && s.exit_code == 0;
+  const auto &r     = s.last_residual_history;
+  double      order = 0.;
+  for (unsigned int k = 1; k + 1 < r.size(); ++k)
+    if (r[k + 1] / r[0] > 1e-12 && r[k] / r[0] < 1e-1)
+      order = std::log(r[k + 1] / r[0]) / std::log(r[k] / r[0]);
+  unsigned int max_iterations = 0;
+  for (const auto n : s.step_iterations)
+    max_iterations = std::max(max_iterations, n);
+  std::printf("liquid and gas: Newton iterations per step at most %s, "
+              "observed order in the last step %s\n",
+              max_iterations <= 6 ? "6" : "more than 6 (FAIL)",
+              order >= 1.8 ? ">= 1.8" : "< 1.8 (FAIL)");
+  ok = ok && max_iterations <= 6 && order >= 1.8;
+
+  const double V0     = s.chamber_history.front().second[0].volume;
+  const auto  &c      = s.chambers[0];
+  const double p_a    = 101325.;
+  ok = pneuma_test::check("liquid and gas: p V_gas^1.4 / (p_a (2 V0)^1.4)",
+                          c.absolute_pressure * std::pow(c.gas_volume, 1.4) /
+                            (p_a * std::pow(2. * V0, 1.4)),
+                          1.,
+                          1e-8) &&
+       ok;
+  ok = pneuma_test::check("liquid and gas: liquid volume",
+                          c.liquid_volume,
+                          0.15,
+                          1e-8) &&
+       ok;
+  ok = pneuma_test::check("liquid and gas: vertical reaction / water weight",
+                          s.reaction[2],
+                          1000. * 9.81 * 0.15,
+                          1e-8) &&
+       ok;
+  return ok ? 0 : 1;
+}

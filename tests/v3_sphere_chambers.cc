@@ -1,0 +1,99 @@
+// V3 (VERIFICATION.md) through the limit point: the incompressible
+// neo-Hookean sphere, p R/(mu H) = 2 (1/l - 1/l^7), inflated past
+// l = 7^(1/6) = 1.383 by a chamber
+//  - with prescribed volume V/V0 = l^3 (the pressure is the Lagrange
+//    multiplier), and
+//  - with a closed gas amount (adiabatic air, kappa 1.4) that follows the
+//    equilibrium path: V_n/V0 = l^3 (1 + p(l)/p_a)^(1/kappa).
+// At l = 1.5, 2 and 3 the stretch (from the chamber volume) and pR/(muH)
+// must be within 0.5 % of the references 1.216278, 0.984375, 0.665752.
+// Pressure control by the same chamber still stops at p_max (exit 2, a
+// message naming the limit point).
+
+#include "test_tools.h"
+
+#include <cmath>
+
+namespace
+{
+  pneuma::RunSummary
+  sphere(const pneuma_test::Settings &chamber)
+  {
+    pneuma_test::Settings s = {
+      {"Geometry/Type", "sphere"},
+      {"Geometry/Radius", "1"},
+      {"Geometry/Global refinements", "3"},
+      {"Discretisation/Polynomial degree", "2"},
+      {"Materials/Region 0/Law", "neo-Hookean"},
+      {"Materials/Region 0/Thickness", "1e-3"},
+      {"Materials/Region 0/Shear modulus", "1e6"},
+      {"Boundary conditions/Fixed points",
+       "0,0,1: xy; 0,0,-1: xy; 1,0,0: yz; -1,0,0: yz"},
+      {"Chambers/Number of chambers", "1"},
+      {"Chambers/Chamber 1/Regions", "0"},
+      {"Load stepping/Stage end times", "0.5, 1, 2"},
+      {"Load stepping/Initial increment", "0.1"},
+      {"Load stepping/Maximum increment", "0.25"},
+      {"Output/Directory", "output-v3-chambers"}};
+    s.insert(s.end(), chamber.begin(), chamber.end());
+    return pneuma_test::run(s);
+  }
+
+  bool
+  check_path(const pneuma::RunSummary &s, const std::string &mode)
+  {
+    bool ok = s.exit_code == 0;
+    const double V0 = s.chamber_history.front().second[0].volume;
+    for (const auto &[t, states] : s.chamber_history)
+      for (const double t_ref : {0.5, 1., 2.})
+        if (std::abs(t - t_ref) < 1e-9)
+          {
+            const double l_target = 1. + t_ref;
+            const double l        = std::cbrt(states[0].volume / V0);
+            const double p_ref =
+              2. * (1. / l_target - std::pow(l_target, -7.));
+            char name[96];
+            std::snprintf(name, sizeof(name), "%s, l = %.1f: stretch",
+                          mode.c_str(), l_target);
+            ok = pneuma_test::check(name, l, l_target, 5e-3) && ok;
+            std::snprintf(name, sizeof(name), "%s, l = %.1f: pR/(muH)",
+                          mode.c_str(), l_target);
+            ok = pneuma_test::check(name, states[0].pressure / 1e3, p_ref,
+                                    5e-3) &&
+                 ok;
+          }
+    return ok;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  bool ok = check_path(sphere({{"Chambers/Chamber 1/Gas/Control", "volume"},
+                               {"Chambers/Chamber 1/Gas/Volume/Function "
+                                "expression",
+                                "(1+t)^3"}}),
+                       "volume control");
+  ok = check_path(
+         sphere({{"Chambers/Chamber 1/Gas/Control", "gas amount"},
+                 {"Chambers/Chamber 1/Gas/Gas amount/Function expression",
+                  "(1+t)^3*(1+2000*(1/(1+t)-1/(1+t)^7)/101325)^(1/1.4)"}}),
+         "gas amount") &&
+       ok;
+
+  // Pressure control by the chamber: p = 1.3 mu H/R > p_max.
+  const auto s =
+    sphere({{"Chambers/Chamber 1/Gas/Control", "pressure"},
+            {"Chambers/Chamber 1/Gas/Pressure/Function expression",
+             "1300*min(t,1)"},
+            {"Load stepping/Stage end times", "1"},
+            {"Load stepping/Initial increment", "0.25"}});
+  const bool clean =
+    s.exit_code == 2 && s.message.find("limit point") != std::string::npos;
+  std::printf("pressure control, p = 1.3 mu H/R > p_max: exit code %d, "
+              "limit point reported: %s\n",
+              s.exit_code,
+              clean ? "yes" : "no");
+  return (ok && clean) ? 0 : 1;
+}
