@@ -281,6 +281,174 @@ namespace pneuma
         }
     }
 
+    ChamberAssembler::Pass::Pass(const ChamberAssembler          &assembler,
+                                 const LA::Vector                &u,
+                                 const AffineConstraints<double> &constraints,
+                                 const std::vector<ChamberLoad>  &loads,
+                                 std::vector<ChamberMeasures>    &measures,
+                                 const bool with_vectors)
+      : assembler(assembler)
+      , u(u)
+      , constraints(constraints)
+      , loads(loads)
+      , measures(measures)
+      , with_vectors(with_vectors)
+      , quadrature(assembler.degree + 1)
+      , fe_values(*assembler.mapping,
+                  assembler.dof_handler->get_fe(),
+                  quadrature,
+                  wall_flags)
+      , free_surface(assembler.degree, assembler.degree + 2)
+      , support_values(*assembler.mapping,
+                       assembler.dof_handler->get_fe(),
+                       Quadrature<2>(free_surface.support_points()),
+                       update_values | update_quadrature_points)
+      , u_support(free_surface.support_points().size())
+      , psi(u_support.size())
+    {
+      const unsigned int n_dofs =
+        assembler.dof_handler->get_fe().n_dofs_per_cell();
+      cell_q.reinit(n_dofs);
+      cell_ql.reinit(n_dofs);
+      const unsigned int n    = assembler.parameters.chambers.size();
+      const MPI_Comm     comm = assembler.dof_handler->get_communicator();
+      measures.resize(n);
+      for (unsigned int c = 0; c < n; ++c)
+        {
+          auto &m  = measures[c];
+          m.volume = m.liquid_volume = m.free_surface_area = m.wetted_area =
+            m.wall_area                                    = 0.;
+          if (with_vectors)
+            {
+              m.q.reinit(assembler.dof_handler->locally_owned_dofs(), comm);
+              if (loads[c].liquid)
+                m.q_liquid.reinit(assembler.dof_handler->locally_owned_dofs(),
+                                  comm);
+            }
+        }
+    }
+
+    void
+    ChamberAssembler::Pass::cell(
+      const DoFHandler<2, 3>::active_cell_iterator &cell,
+      const std::vector<double>                    &local_u,
+      FullMatrix<double>                           *cell_matrix,
+      Vector<double>                               *cell_residual,
+      const std::vector<types::global_dof_index>   &dof_indices,
+      const FEValues<2, 3>                         *reinit_values)
+    {
+      const auto &walls = assembler.walls_of(cell->material_id());
+      if (walls.empty())
+        return;
+      const FEValuesExtractors::Vector displacement(0);
+      if (!reinit_values)
+        fe_values.reinit(cell);
+      const FEValues<2, 3> &fe_values =
+        reinit_values ? *reinit_values : this->fe_values;
+      const auto [x_mean, n_mean] = cell_centre_and_normal(fe_values);
+      bool support_ready          = false;
+      for (const auto &[c, rs] : walls)
+        {
+          const double       s    = wall_sign(assembler.geometry,
+                                     assembler.parameters.chambers[c],
+                                     rs,
+                                     x_mean,
+                                     n_mean);
+          const ChamberLoad &load = loads[c];
+          cell_q                  = 0;
+          CellIntegrals out;
+          out.matrix   = cell_matrix;
+          out.residual = cell_residual;
+          out.q        = with_vectors ? &cell_q : nullptr;
+          // Liquid-only chambers need the gas pass (volume, q) only for
+          // their measures, not in Newton's assemblies.
+          if (load.gas || !with_vectors)
+            integrate(fe_values,
+                      local_u,
+                      s,
+                      load,
+                      false,
+                      assembler.unit_gravity,
+                      assembler.gravity_magnitude,
+                      out);
+          if (load.liquid)
+            {
+              if (!support_ready)
+                {
+                  support_values.reinit(cell);
+                  support_values[displacement].get_function_values(u,
+                                                                   u_support);
+                  support_ready = true;
+                }
+              for (unsigned int k = 0; k < psi.size(); ++k)
+                psi[k] = assembler.height(support_values.quadrature_point(k) +
+                                          u_support[k]) -
+                         load.level;
+              cell_ql       = 0;
+              out.q         = with_vectors ? &cell_ql : nullptr;
+              const auto at = free_surface.classify(psi);
+              if (at == FreeSurfaceQuadrature::Location::wet)
+                integrate(fe_values,
+                          local_u,
+                          s,
+                          load,
+                          true,
+                          assembler.unit_gravity,
+                          assembler.gravity_magnitude,
+                          out);
+              else if (at == FreeSurfaceQuadrature::Location::cut)
+                {
+                  FEValues<2, 3> cut_values(*assembler.mapping,
+                                            fe_values.get_fe(),
+                                            free_surface.wet_quadrature(),
+                                            wall_flags);
+                  cut_values.reinit(cell);
+                  integrate(cut_values,
+                            local_u,
+                            s,
+                            load,
+                            true,
+                            assembler.unit_gravity,
+                            assembler.gravity_magnitude,
+                            out);
+                }
+              if (with_vectors && at != FreeSurfaceQuadrature::Location::dry)
+                constraints.distribute_local_to_global(cell_ql,
+                                                       dof_indices,
+                                                       measures[c].q_liquid);
+            }
+          auto &m = measures[c];
+          m.volume += out.volume;
+          m.wall_area += out.area;
+          m.liquid_volume += out.liquid_volume;
+          m.free_surface_area += out.free_surface;
+          m.wetted_area += out.wetted;
+          if (with_vectors)
+            constraints.distribute_local_to_global(cell_q, dof_indices, m.q);
+        }
+    }
+
+    void
+    ChamberAssembler::Pass::finish()
+    {
+      const MPI_Comm comm = assembler.dof_handler->get_communicator();
+      for (unsigned int c = 0; c < measures.size(); ++c)
+        {
+          auto &m             = measures[c];
+          m.volume            = Utilities::MPI::sum(m.volume, comm);
+          m.wall_area         = Utilities::MPI::sum(m.wall_area, comm);
+          m.liquid_volume     = Utilities::MPI::sum(m.liquid_volume, comm);
+          m.free_surface_area = Utilities::MPI::sum(m.free_surface_area, comm);
+          m.wetted_area       = Utilities::MPI::sum(m.wetted_area, comm);
+          if (with_vectors)
+            {
+              m.q.compress(VectorOperation::add);
+              if (loads[c].liquid)
+                m.q_liquid.compress(VectorOperation::add);
+            }
+        }
+    }
+
     void
     ChamberAssembler::assemble(const LA::Vector                &u,
                                const AffineConstraints<double> &constraints,
@@ -290,135 +458,27 @@ namespace pneuma
                                std::vector<ChamberMeasures>    &measures,
                                const bool with_vectors) const
     {
-      const auto        &fe     = dof_handler->get_fe();
-      const unsigned int n_dofs = fe.n_dofs_per_cell();
-      const QGauss<2>    quadrature(degree + 1);
-      FEValues<2, 3>     fe_values(*mapping, fe, quadrature, wall_flags);
-      FreeSurfaceQuadrature free_surface(degree, degree + 2);
-      FEValues<2, 3>        support_values(*mapping,
-                                    fe,
-                                    Quadrature<2>(free_surface.support_points()),
-                                    update_values | update_quadrature_points);
-      const FEValuesExtractors::Vector displacement(0);
-      std::vector<Tensor<1, 3>> u_support(free_surface.support_points().size());
-      std::vector<double>       psi(u_support.size());
-
-      const unsigned int n = parameters.chambers.size();
-      measures.resize(n);
-      const MPI_Comm comm = dof_handler->get_communicator();
-      for (unsigned int c = 0; c < n; ++c)
-        {
-          auto &m = measures[c];
-          m.volume = m.liquid_volume = m.free_surface_area = m.wetted_area =
-            m.wall_area                                    = 0.;
-          if (with_vectors)
-            {
-              m.q.reinit(dof_handler->locally_owned_dofs(), comm);
-              if (loads[c].liquid)
-                m.q_liquid.reinit(dof_handler->locally_owned_dofs(), comm);
-            }
-        }
-
-      FullMatrix<double>                   cell_matrix(n_dofs, n_dofs);
-      Vector<double>                       cell_residual(n_dofs), cell_q(n_dofs),
-        cell_ql(n_dofs);
+      Pass               pass(*this, u, constraints, loads, measures, with_vectors);
+      const unsigned int n_dofs = dof_handler->get_fe().n_dofs_per_cell();
+      FullMatrix<double> cell_matrix(n_dofs, n_dofs);
+      Vector<double>     cell_residual(n_dofs);
       std::vector<types::global_dof_index> dof_indices(n_dofs);
       std::vector<double>                  local_u(n_dofs);
-
       for (const auto &cell : dof_handler->active_cell_iterators())
         {
-          if (!cell->is_locally_owned())
+          if (!cell->is_locally_owned() ||
+              walls_of(cell->material_id()).empty())
             continue;
-          const auto &walls = walls_of(cell->material_id());
-          if (walls.empty())
-            continue;
-          fe_values.reinit(cell);
           cell->get_dof_indices(dof_indices);
           for (unsigned int i = 0; i < n_dofs; ++i)
             local_u[i] = u[dof_indices[i]];
-          const auto [x_mean, n_mean] = cell_centre_and_normal(fe_values);
-          cell_matrix                 = 0;
-          cell_residual               = 0;
-          bool support_ready          = false;
-
-          for (const auto &[c, rs] : walls)
-            {
-              const double s = wall_sign(
-                geometry, parameters.chambers[c], rs, x_mean, n_mean);
-              const ChamberLoad &load = loads[c];
-              cell_q                  = 0;
-              CellIntegrals out;
-              out.matrix   = tangent ? &cell_matrix : nullptr;
-              out.residual = residual ? &cell_residual : nullptr;
-              out.q        = with_vectors ? &cell_q : nullptr;
-              // Liquid-only chambers need the gas pass (volume, q) only
-              // for their measures, not in Newton's assemblies.
-              if (load.gas || !with_vectors)
-                integrate(fe_values,
-                          local_u,
-                          s,
-                          load,
-                          false,
-                          unit_gravity,
-                          gravity_magnitude,
-                          out);
-              if (load.liquid)
-                {
-                  if (!support_ready)
-                    {
-                      support_values.reinit(cell);
-                      support_values[displacement].get_function_values(
-                        u, u_support);
-                      support_ready = true;
-                    }
-                  for (unsigned int k = 0; k < psi.size(); ++k)
-                    psi[k] = height(support_values.quadrature_point(k)
-                                    + u_support[k]) -
-                             load.level;
-                  cell_ql       = 0;
-                  out.q         = with_vectors ? &cell_ql : nullptr;
-                  const auto at = free_surface.classify(psi);
-                  if (at == FreeSurfaceQuadrature::Location::wet)
-                    integrate(fe_values,
-                              local_u,
-                              s,
-                              load,
-                              true,
-                              unit_gravity,
-                              gravity_magnitude,
-                              out);
-                  else if (at == FreeSurfaceQuadrature::Location::cut)
-                    {
-                      FEValues<2, 3> cut_values(*mapping,
-                                                fe,
-                                                free_surface.wet_quadrature(),
-                                                wall_flags);
-                      cut_values.reinit(cell);
-                      integrate(cut_values,
-                                local_u,
-                                s,
-                                load,
-                                true,
-                                unit_gravity,
-                                gravity_magnitude,
-                                out);
-                    }
-                  if (with_vectors && at != FreeSurfaceQuadrature::Location::dry)
-                    constraints.distribute_local_to_global(cell_ql,
-                                                           dof_indices,
-                                                           measures[c].q_liquid);
-                }
-              auto &m = measures[c];
-              m.volume += out.volume;
-              m.wall_area += out.area;
-              m.liquid_volume += out.liquid_volume;
-              m.free_surface_area += out.free_surface;
-              m.wetted_area += out.wetted;
-              if (with_vectors)
-                constraints.distribute_local_to_global(cell_q,
-                                                       dof_indices,
-                                                       m.q);
-            }
+          cell_matrix   = 0;
+          cell_residual = 0;
+          pass.cell(cell,
+                    local_u,
+                    tangent ? &cell_matrix : nullptr,
+                    residual ? &cell_residual : nullptr,
+                    dof_indices);
           if (tangent && residual)
             constraints.distribute_local_to_global(
               cell_matrix, cell_residual, dof_indices, *tangent, *residual);
@@ -431,22 +491,7 @@ namespace pneuma
                                                    dof_indices,
                                                    *residual);
         }
-
-      for (unsigned int c = 0; c < n; ++c)
-        {
-          auto &m = measures[c];
-          m.volume = Utilities::MPI::sum(m.volume, comm);
-          m.wall_area = Utilities::MPI::sum(m.wall_area, comm);
-          m.liquid_volume = Utilities::MPI::sum(m.liquid_volume, comm);
-          m.free_surface_area = Utilities::MPI::sum(m.free_surface_area, comm);
-          m.wetted_area = Utilities::MPI::sum(m.wetted_area, comm);
-          if (with_vectors)
-            {
-              m.q.compress(VectorOperation::add);
-              if (loads[c].liquid)
-                m.q_liquid.compress(VectorOperation::add);
-            }
-        }
+      pass.finish();
       if (residual)
         residual->compress(VectorOperation::add);
       if (tangent)

@@ -198,19 +198,27 @@ namespace pneuma
     request.residual = &residual.field;
     request.tangent  = &tangent;
     request.external = &external;
-    assembler.assemble(ghosted, constraints, request);
     if (chamber_parameters.empty())
       {
+        assembler.assemble(ghosted, constraints, request);
         residual.border.reinit(0);
         return;
       }
-    chamber_assembler.assemble(ghosted,
-                               constraints,
-                               chamber_system.loads(u.border),
-                               &residual.field,
-                               &tangent,
-                               chamber_measures,
-                               true);
+    // The chamber terms join the membrane's cell matrices.
+    const auto chamber_loads = chamber_system.loads(u.border);
+    chambers::ChamberAssembler::Pass pass(
+      chamber_assembler, ghosted, constraints, chamber_loads, chamber_measures, true);
+    request.cell_terms = [&pass](const auto &cell,
+                                 const auto &fe_values,
+                                 const auto &local_u,
+                                 auto       *cell_matrix,
+                                 auto       *cell_residual,
+                                 const auto &dof_indices) {
+      pass.cell(
+        cell, local_u, cell_matrix, cell_residual, dof_indices, &fe_values);
+    };
+    assembler.assemble(ghosted, constraints, request);
+    pass.finish();
     chamber_system.evaluate(u.border, chamber_measures, residual.border);
   }
 

@@ -36,10 +36,12 @@ namespace pneuma
       prm.enter_subsection("Boundary conditions");
       prm.declare_entry("Rigid regions",
                         "",
-                        Patterns::List(Patterns::Integer(0)),
+                        Patterns::Anything(),
                         "Material ids of planar regions that move as rigid "
                         "plates (exact large rotations; in-plane stiffness "
-                        "from the region's material). Supports go at the "
+                        "from the region's material). Ids joined by + form "
+                        "one plate (e.g. 4+5+6, 7+8+9: a steel end plate "
+                        "that closes several chambers). Supports go at the "
                         "plate's reference node, the vertex nearest its "
                         "centroid.");
       prm.leave_subsection();
@@ -49,9 +51,20 @@ namespace pneuma
     RigidRegions::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Boundary conditions");
-      const auto ids = parse_id_list(prm.get("Rigid regions"),
-                                     "Boundary conditions/Rigid regions");
-      region_ids     = std::set<types::material_id>(ids.begin(), ids.end());
+      region_ids.clear();
+      for (const auto &group :
+           Utilities::split_string_list(prm.get("Rigid regions"), ','))
+        {
+          std::set<types::material_id> plate;
+          for (const auto &id : Utilities::split_string_list(group, '+'))
+            {
+              const auto one =
+                parse_id_list(id, "Boundary conditions/Rigid regions");
+              plate.insert(one.begin(), one.end());
+            }
+          if (!plate.empty())
+            region_ids.push_back(plate);
+        }
       prm.leave_subsection();
     }
 
@@ -63,14 +76,17 @@ namespace pneuma
       const MPI_Comm comm = dof_handler.get_communicator();
       IndexSet       result(dof_handler.n_dofs());
       plates.clear();
-      for (const auto id : region_ids)
+      for (const auto &ids : region_ids)
         {
+          std::string id;
+          for (const auto i : ids)
+            id += (id.empty() ? "" : "+") + std::to_string(i);
           // The region's vertices and centroid.
           std::vector<Point<3>> vertices;
           Point<3>              sum;
           double                area = 0.;
           for (const auto &cell : dof_handler.active_cell_iterators())
-            if (cell->is_locally_owned() && cell->material_id() == id)
+            if (cell->is_locally_owned() && ids.count(cell->material_id()))
               {
                 sum += cell->measure() * cell->center();
                 area += cell->measure();
@@ -80,13 +96,13 @@ namespace pneuma
           const double total = Utilities::MPI::sum(area, comm);
           check_input(total > 0.,
                       "Boundary conditions/Rigid regions",
-                      "the mesh has no cells in region " + std::to_string(id));
+                      "the mesh has no cells in region " + id);
           Point<3> centroid;
           for (unsigned int d = 0; d < 3; ++d)
             centroid[d] = Utilities::MPI::sum(sum[d], comm) / total;
 
           Plate plate;
-          plate.id  = id;
+          plate.ids = ids;
           auto pick = [&](const auto &score) {
             double   best = -std::numeric_limits<double>::max();
             Point<3> where;
@@ -113,7 +129,7 @@ namespace pneuma
                              plate.masters[2] - plate.masters[0]);
           check_input(normal.norm() > 1e-6 * size * size,
                       "Boundary conditions/Rigid regions",
-                      "region " + std::to_string(id)
+                      "region " + id
                         + " is degenerate (all its nodes on a line)");
           normal /= normal.norm();
           double off_plane = 0.;
@@ -123,7 +139,7 @@ namespace pneuma
           off_plane = Utilities::MPI::max(off_plane, comm);
           check_input(off_plane <= 1e-6 * size,
                       "Boundary conditions/Rigid regions",
-                      "region " + std::to_string(id)
+                      "region " + id
                         + " is not planar (a node is "
                         + std::to_string(off_plane)
                         + " m off its plane); only planar plates can be rigid");
@@ -177,7 +193,7 @@ namespace pneuma
           std::set<types::global_dof_index> masters(plate.master_dofs.begin(),
                                                     plate.master_dofs.end());
           for (const auto &cell : dof_handler.active_cell_iterators())
-            if (!cell->is_artificial() && cell->material_id() == plate.id)
+            if (!cell->is_artificial() && plate.ids.count(cell->material_id()))
               {
                 fe_values.reinit(cell);
                 cell->get_dof_indices(dofs);

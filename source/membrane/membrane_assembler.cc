@@ -222,6 +222,14 @@ namespace pneuma
                     }
                 }
 
+          if (request.cell_terms)
+            request.cell_terms(cell,
+                               fe_values,
+                               local_u,
+                               want_matrix ? &cell_matrix : nullptr,
+                               request.residual ? &cell_residual : nullptr,
+                               dof_indices);
+
           if (want_matrix && request.residual)
             constraints.distribute_local_to_global(cell_matrix,
                                                    cell_residual,

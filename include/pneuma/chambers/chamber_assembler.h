@@ -26,12 +26,16 @@
  * free surface because \f$p_\ell\f$ vanishes there.
  */
 
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/vector.h>
 
 #include <pneuma/chambers/chamber_parameters.h>
+#include <pneuma/chambers/free_surface_quadrature.h>
 #include <pneuma/core/linear_algebra.h>
 #include <pneuma/geometry/scene_generator.h>
 
@@ -104,6 +108,52 @@ namespace pneuma
                LA::SparseMatrix                *tangent,
                std::vector<ChamberMeasures>    &measures,
                const bool                       with_vectors) const;
+
+      /**
+       * One pass over the cells, for callers that loop themselves (the
+       * membrane assembler adds these terms to its cell matrices, so that
+       * each cell is distributed once): construct, call cell() for every
+       * locally owned cell, then finish().
+       */
+      class Pass
+      {
+      public:
+        Pass(const ChamberAssembler          &assembler,
+             const LA::Vector                &u,
+             const AffineConstraints<double> &constraints,
+             const std::vector<ChamberLoad>  &loads,
+             std::vector<ChamberMeasures>    &measures,
+             const bool                       with_vectors);
+        /// Add -f to @p cell_residual and -df/du to @p cell_matrix (either
+        /// may be nullptr) and accumulate the measures. @p reinit_values:
+        /// the caller's FEValues of this cell with the same quadrature, if
+        /// any (saves a reinit).
+        void
+        cell(const DoFHandler<2, 3>::active_cell_iterator &cell,
+             const std::vector<double>                    &local_u,
+             FullMatrix<double>                           *cell_matrix,
+             Vector<double>                               *cell_residual,
+             const std::vector<types::global_dof_index>   &dof_indices,
+             const FEValues<2, 3> *reinit_values = nullptr);
+        /// Sum the measures over the ranks, compress the vectors.
+        void
+        finish();
+
+      private:
+        const ChamberAssembler          &assembler;
+        const LA::Vector                &u;
+        const AffineConstraints<double> &constraints;
+        const std::vector<ChamberLoad>  &loads;
+        std::vector<ChamberMeasures>    &measures;
+        const bool                       with_vectors;
+        QGauss<2>                        quadrature;
+        FEValues<2, 3>                   fe_values;
+        FreeSurfaceQuadrature            free_surface;
+        FEValues<2, 3>                   support_values;
+        std::vector<Tensor<1, 3>>        u_support;
+        std::vector<double>              psi;
+        Vector<double>                   cell_q, cell_ql;
+      };
 
       /// Liquid volume below @p level in chamber @p c and its derivative
       /// (the free-surface area) at the ghosted displacement @p u.

@@ -22,6 +22,7 @@
 #include <deal.II/lac/affine_constraints.h>
 
 #include <set>
+#include <vector>
 
 namespace pneuma
 {
@@ -69,11 +70,11 @@ namespace pneuma
     private:
       struct Plate
       {
-        types::material_id                     id;
+        std::set<types::material_id>           ids;
         std::array<Point<3>, 3>                masters;
         std::array<types::global_dof_index, 9> master_dofs;
       };
-      std::set<types::material_id>              region_ids;
+      std::vector<std::set<types::material_id>> region_ids;
       std::vector<Plate>                        plates;
       mutable std::set<types::global_dof_index> slaves;
     };

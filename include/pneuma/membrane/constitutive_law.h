@@ -125,7 +125,7 @@ namespace pneuma
     {
     public:
       /// Number of region slots that can be set in a parameter file.
-      static constexpr unsigned int max_regions = 8;
+      static constexpr unsigned int max_regions = 16;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

@@ -16,13 +16,19 @@
  */
 
 #include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
 
 #include <pneuma/core/linear_algebra.h>
 #include <pneuma/geometry/scene_generator.h>
 #include <pneuma/loads/loads.h>
 #include <pneuma/membrane/constitutive_law.h>
+
+#include <functional>
+#include <vector>
 
 namespace pneuma
 {
@@ -41,6 +47,20 @@ namespace pneuma
       LA::SparseMatrix *tangent = nullptr;
       /// External load vector f_ext (owned), or nullptr.
       LA::Vector *external = nullptr;
+      /**
+       * Further terms of the same cells (e.g. chamber loads), added to the
+       * cell matrix and residual before they are distributed once:
+       * (cell, its FEValues (Gauss degree + 1, reinit'ed; values,
+       * gradients, normals, points, JxW), local displacement, cell matrix
+       * or nullptr, cell residual or nullptr, dof indices).
+       */
+      std::function<void(const DoFHandler<2, 3>::active_cell_iterator &,
+                         const FEValues<2, 3> &,
+                         const std::vector<double> &,
+                         FullMatrix<double> *,
+                         Vector<double> *,
+                         const std::vector<types::global_dof_index> &)>
+        cell_terms;
     };
 
     /// Assembles the membrane with its loads on a distributed mesh.
