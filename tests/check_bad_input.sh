@@ -32,5 +32,17 @@ check "$dir/valid.prm"              1 "Geometry/No such entry" --set "Geometry/N
 check "$dir/valid.prm"              1 "Geometry/Radius: must be positive" --set "Geometry/Radius=-1"
 check "$dir/valid.prm"              1 "unknown option" --bogus
 check "$dir/valid.prm"              0 "finished"
+c="$dir/chamber_valid.prm"
+check "$c" 1 "Chambers/Chamber 1/Regions: the oriented walls do not close" --set "Chambers/Chamber 1/Regions=0, 1"
+check "$c" 1 "flipping region 1 or 2 closes it" --set "Chambers/Chamber 1/Regions=0, -1, 2"
+check "$c" 1 "walls face into the chamber" --set "Chambers/Chamber 1/Regions=-0, -1, -2"
+check "$c" 1 "no cells in region 7" --set "Chambers/Chamber 1/Regions=0, 1, 2, 7"
+check "$c" 1 "'x' is not a material id" --set "Chambers/Chamber 1/Regions=0, x"
+check "$c" 1 "Chambers/Chamber 1/Connected to" --set "Chambers/Chamber 1/Filling=connected"
+check "$c" 1 "Chambers/Chamber 1/Gas/Gas amount/Function expression" --set "Chambers/Chamber 1/Gas/Gas amount/Function expression=1+*t"
+check "$c" 1 "Chambers/Chamber 1/Gas/Control" --set "Chambers/Chamber 1/Filling=liquid and gas" --set "Chambers/Chamber 1/Gas/Control=volume"
+check "$c" 1 "Chambers/Chamber 1/Liquid/Volume: the liquid volume 1 m^3 at t = 0 does not fit" --set "Chambers/Chamber 1/Filling=liquid" --set "Chambers/Chamber 1/Liquid/Volume/Function expression=1"
+check "$c" 2 "does not fit" --set "Chambers/Chamber 1/Filling=liquid" --set "Chambers/Chamber 1/Liquid/Volume/Function expression=t"
+check "$c" 0 "finished"
 if [ $fail -eq 0 ]; then echo "all bad inputs rejected cleanly"; fi
 exit $fail

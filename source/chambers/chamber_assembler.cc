@@ -206,6 +206,8 @@ namespace pneuma
       std::vector<Tensor<1, 3>> sum(n);
       std::vector<double>       area(n, 0.);
       std::map<types::material_id, double> region_area;
+      std::map<std::pair<unsigned int, types::material_id>, Tensor<1, 3>>
+        region_vector;
       for (const auto &cell : dof_handler->active_cell_iterators())
         if (cell->is_locally_owned())
           {
@@ -228,6 +230,7 @@ namespace pneuma
                   geometry, parameters.chambers[c], rs, x, n_mean);
                 sum[c] += s * cell_vector;
                 area[c] += cell_area;
+                region_vector[{c, cell->material_id()}] += s * cell_vector;
               }
           }
       const MPI_Comm comm = dof_handler->get_communicator();
@@ -261,6 +264,20 @@ namespace pneuma
             }
           if (gap.norm() > 1e-8 * total)
             {
+              // Would flipping one wall close it?
+              std::string hint;
+              for (const auto &[id, sign] : def.regions)
+                {
+                  Tensor<1, 3> v;
+                  const auto   it = region_vector.find({c, id});
+                  for (unsigned int d = 0; d < 3; ++d)
+                    v[d] = Utilities::MPI::sum(
+                      it == region_vector.end() ? 0. : it->second[d], comm);
+                  if (!def.open && (gap - 2. * v).norm() <= 1e-8 * total)
+                    hint += (hint.empty() ? "" : " or ") + std::to_string(id);
+                }
+              if (!hint.empty())
+                hint = " (flipping region " + hint + " closes it)";
               std::ostringstream msg;
               msg << "the oriented walls do not close the chamber: their "
                      "area vectors sum to ("
@@ -271,7 +288,8 @@ namespace pneuma
                      "with a minus sign"
                   << (def.open ? " (an open tank may only lack walls "
                                  "parallel to gravity)" :
-                                 "");
+                                 "")
+                  << hint;
               throw InputError(def.path + "/Regions", msg.str());
             }
           if (def.open)

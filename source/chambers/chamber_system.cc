@@ -1,4 +1,5 @@
 #include <pneuma/chambers/chamber_system.h>
+#include <pneuma/core/input_error.h>
 
 #include <cmath>
 #include <iomanip>
@@ -176,10 +177,20 @@ namespace pneuma
           double V, V_l, A, w;
           group_measures(g, m, V, V_l, A, w);
           g.V0 = V;
+          for (const auto c : g.members)
+            if (!parameters.chambers[c].open && m[c].volume <= 0.)
+              throw InputError(parameters.chambers[c].path + "/Regions",
+                               "the walls face into the chamber (its volume "
+                               "is " +
+                                 std::to_string(m[c].volume) +
+                                 " m^3): flip the signs of its regions");
           if (g.liquid)
             {
               const std::string error = predict_level(g, u);
-              AssertThrow(error.empty(), ExcMessage(error));
+              if (!error.empty())
+                throw InputError(parameters.chambers[g.leader].path +
+                                   "/Liquid/Volume",
+                                 error.substr(error.find(':') + 2));
             }
           if (!g.gas)
             continue;
