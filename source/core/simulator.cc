@@ -129,6 +129,12 @@ namespace pneuma
     if (!rigid_regions.empty())
       locally_relevant.add_indices(
         rigid_regions.master_dofs(*mapping, dof_handler));
+    // Junction copies are tied to a master that every rank must see.
+    junction_ties.find(*mapping,
+                       dof_handler,
+                       rigid_regions.all_ids(),
+                       locally_relevant);
+    locally_relevant.add_indices(junction_ties.masters);
     make_constraints();
 
     DynamicSparsityPattern dsp(locally_relevant);
@@ -173,13 +179,17 @@ namespace pneuma
     kinematic_constraints.reinit(locally_relevant);
     DoFTools::make_hanging_node_constraints(dof_handler, kinematic_constraints);
     rigid_regions.add_constraints(*mapping, dof_handler, kinematic_constraints);
+    junction_ties.add_constraints(kinematic_constraints);
     kinematic_constraints.close();
 
     constraints.clear();
     constraints.reinit(locally_relevant);
     constraints.merge(kinematic_constraints);
+    auto dependent = rigid_regions.slave_dofs();
+    for (const auto copy : junction_ties.copies())
+      dependent.insert(copy);
     boundary_conditions.add_update_constraints(dof_handler,
-                                               rigid_regions.slave_dofs(),
+                                               dependent,
                                                constraints);
     constraints.close();
   }

@@ -15,6 +15,7 @@
 #include <pneuma/chambers/chamber_system.h>
 #include <pneuma/core/linear_algebra.h>
 #include <pneuma/core/simulator.h>
+#include <pneuma/geometry/junctions.h>
 #include <pneuma/geometry/scene_generator.h>
 #include <pneuma/loads/boundary_conditions.h>
 #include <pneuma/loads/loads.h>
@@ -134,6 +135,8 @@ namespace pneuma
     /// Hanging nodes and rigid plates only (no prescribed values): used to
     /// condense forces onto the independent dofs for the reactions.
     AffineConstraints<double>                  kinematic_constraints;
+    /// Coincident copies of junction dofs (dividers, shared seams).
+    geometry::JunctionTies                     junction_ties;
     membrane::MembraneAssembler                assembler;
     chambers::ChamberAssembler                 chamber_assembler;
     chambers::ChamberSystem                    chamber_system;

@@ -6,6 +6,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <pneuma/core/input_error.h>
+#include <pneuma/geometry/junctions.h>
 #include <pneuma/geometry/scene_generator.h>
 
 #include <fstream>
@@ -194,7 +195,14 @@ namespace pneuma
         for (const auto &cell : coarse.active_cell_iterators())
           cell->set_material_id(0);
 
-      tria.copy_triangulation(coarse);
+      // Lines joining more than two cells (dividers, shared seams) are
+      // split per region for p4est; the copies are tied after the dofs
+      // exist (junctions.h).
+      Triangulation<2, 3> split;
+      if (split_junctions(coarse, split))
+        tria.copy_triangulation(split);
+      else
+        tria.copy_triangulation(coarse);
 
       // Manifolds: curved surfaces and rims follow the true geometry.
       if (geometry_type == "sphere")

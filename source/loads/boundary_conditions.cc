@@ -233,8 +233,9 @@ namespace pneuma
                                               dof_handler.get_communicator()),
                   "Boundary conditions",
                   "a fixed point, boundary or region lies inside a rigid "
-                  "region; support a rigid plate at its reference node (the "
-                  "vertex nearest its centroid)");
+                  "region or on a junction copy; support a rigid plate at "
+                  "its reference node (the vertex nearest its centroid) and "
+                  "keep supports off junction lines");
     }
 
     void

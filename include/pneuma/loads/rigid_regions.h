@@ -60,6 +60,16 @@ namespace pneuma
                       const DoFHandler<2, 3>    &dof_handler,
                       AffineConstraints<double> &constraints) const;
 
+      /// Material ids of all rigid regions.
+      std::set<types::material_id>
+      all_ids() const
+      {
+        std::set<types::material_id> ids;
+        for (const auto &plate : region_ids)
+          ids.insert(plate.begin(), plate.end());
+        return ids;
+      }
+
       /// The slave dofs added by add_constraints (locally relevant ones).
       const std::set<types::global_dof_index> &
       slave_dofs() const
