@@ -130,10 +130,10 @@ namespace pneuma
       locally_relevant.add_indices(
         rigid_regions.master_dofs(*mapping, dof_handler));
     // Junction copies are tied to a master that every rank must see.
-    junction_ties.find(*mapping,
-                       dof_handler,
-                       rigid_regions.all_ids(),
-                       locally_relevant);
+    auto master_regions = rigid_regions.all_ids();
+    for (const auto id : boundary_conditions.prescribed_regions())
+      master_regions.insert(id);
+    junction_ties.find(*mapping, dof_handler, master_regions, locally_relevant);
     locally_relevant.add_indices(junction_ties.masters);
     make_constraints();
 
@@ -185,11 +185,9 @@ namespace pneuma
     constraints.clear();
     constraints.reinit(locally_relevant);
     constraints.merge(kinematic_constraints);
-    auto dependent = rigid_regions.slave_dofs();
-    for (const auto copy : junction_ties.copies())
-      dependent.insert(copy);
     boundary_conditions.add_update_constraints(dof_handler,
-                                               dependent,
+                                               rigid_regions.slave_dofs(),
+                                               junction_ties.copies(),
                                                constraints);
     constraints.close();
   }
@@ -250,6 +248,25 @@ namespace pneuma
       chamber_system.solve(linear_solver, tangent, rhs, du);
     constraints.distribute(du.field);
     ++n_linear_solves;
+  }
+
+  void
+  Simulator::Impl::apply_kinematic_constraints()
+  {
+    // Dependent dofs (rigid plates, junction copies) follow their masters
+    // after prescribed values have changed.
+    if (rigid_regions.empty() && junction_ties.ties.empty())
+      return;
+    ghosted = solution;
+    for (const auto i : locally_owned)
+      if (kinematic_constraints.is_constrained(i))
+        {
+          double v = kinematic_constraints.get_inhomogeneity(i);
+          for (const auto &e : *kinematic_constraints.get_constraint_entries(i))
+            v += e.second * ghosted[e.first];
+          solution[i] = v;
+        }
+    solution.compress(VectorOperation::insert);
   }
 
   double
@@ -365,6 +382,7 @@ namespace pneuma
                                                   dof_handler,
                                                   t_new,
                                                   solution);
+        apply_kinematic_constraints();
         pcout << "Step " << step + 1 << "  t = " << t_new
               << "  dt = " << t_new - t_old << std::endl;
         if (with_chambers)

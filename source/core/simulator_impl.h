@@ -64,6 +64,9 @@ namespace pneuma
     setup_system();
     void
     make_constraints();
+    /// Set rigid-plate and junction-copy dofs from their masters.
+    void
+    apply_kinematic_constraints();
 
     // --- NonlinearProblem
     void

@@ -61,6 +61,12 @@ namespace pneuma
                         Patterns::List(Patterns::Integer(0)),
                         "Boundary ids whose displacement follows the "
                         "function 'Prescribed displacement' of (x,y,z,t).");
+      prm.declare_entry("Prescribed displacement regions",
+                        "",
+                        Patterns::List(Patterns::Integer(0)),
+                        "Material ids whose nodes all follow the function "
+                        "'Prescribed displacement' of (x,y,z,t) (e.g. a "
+                        "piston or a moving end plate).");
       prm.enter_subsection("Prescribed displacement");
       Functions::ParsedFunction<3>::declare_parameters(prm, 3);
       prm.set("Function expression", "0; 0; 0");
@@ -101,6 +107,10 @@ namespace pneuma
       const auto fr = parse_id_list(prm.get("Fixed regions"),
                                     "Boundary conditions/Fixed regions");
       fixed_regions = std::set<types::material_id>(fr.begin(), fr.end());
+      const auto dr =
+        parse_id_list(prm.get("Prescribed displacement regions"),
+                      "Boundary conditions/Prescribed displacement regions");
+      displaced_regions = std::set<types::material_id>(dr.begin(), dr.end());
       const auto db =
         parse_id_list(prm.get("Prescribed displacement boundaries"),
                       "Boundary conditions/Prescribed displacement boundaries");
@@ -149,6 +159,10 @@ namespace pneuma
         check_input(m.count(id),
                     "Boundary conditions/Fixed regions",
                     "the mesh has no cells in region " + std::to_string(id));
+      for (const auto id : displaced_regions)
+        check_input(m.count(id),
+                    "Boundary conditions/Prescribed displacement regions",
+                    "the mesh has no cells in region " + std::to_string(id));
     }
 
     std::map<types::global_dof_index, double>
@@ -188,6 +202,28 @@ namespace pneuma
               values[d] = 0.;
           }
 
+      if (!displaced_regions.empty())
+        {
+          displacement_function->set_time(t);
+          const auto &fe = dof_handler.get_fe();
+          const auto &unit_points = fe.get_unit_support_points();
+          Vector<double> value(3);
+          for (const auto &cell : dof_handler.active_cell_iterators())
+            if (!cell->is_artificial() &&
+                displaced_regions.count(cell->material_id()))
+              {
+                dofs.resize(fe.n_dofs_per_cell());
+                cell->get_dof_indices(dofs);
+                for (unsigned int i = 0; i < dofs.size(); ++i)
+                  {
+                    const Point<3> x =
+                      mapping.transform_unit_to_real_cell(cell, unit_points[i]);
+                    values[dofs[i]] = displacement_function->value(
+                      x, fe.system_to_component_index(i).first);
+                  }
+              }
+        }
+
       // Point supports: the nearest vertex over all ranks.
       for (const auto &fp : fixed_points)
         {
@@ -215,6 +251,7 @@ namespace pneuma
     BoundaryConditions::add_update_constraints(
       const DoFHandler<2, 3>                  &dof_handler,
       const std::set<types::global_dof_index> &rigid_slaves,
+      const std::set<types::global_dof_index> &junction_copies,
       AffineConstraints<double>               &constraints) const
     {
       // The mapping does not matter for homogeneous values.
@@ -223,6 +260,10 @@ namespace pneuma
       bool conflict = false;
       for (const auto &v : values)
         {
+          // A junction copy follows its master (which a support at the
+          // same place holds anyway).
+          if (junction_copies.count(v.first))
+            continue;
           if (rigid_slaves.count(v.first))
             conflict = true;
           else if (constraints.can_store_line(v.first)
@@ -233,9 +274,8 @@ namespace pneuma
                                               dof_handler.get_communicator()),
                   "Boundary conditions",
                   "a fixed point, boundary or region lies inside a rigid "
-                  "region or on a junction copy; support a rigid plate at "
-                  "its reference node (the vertex nearest its centroid) and "
-                  "keep supports off junction lines");
+                  "region; support a rigid plate at its reference node (the "
+                  "vertex nearest its centroid)");
     }
 
     void

@@ -50,8 +50,9 @@ namespace pneuma
       /// Every master: each rank must see them.
       IndexSet masters;
 
-      /// Find the ties of the distributed mesh; cells whose material id is
-      /// in @p rigid_ids belong to rigid plates (their copy is the master).
+      /// Find the ties of the distributed mesh; a copy in a cell whose
+      /// material id is in @p rigid_ids (rigid plates, prescribed regions)
+      /// is the master.
       void
       find(const Mapping<2, 3>                 &mapping,
            const DoFHandler<2, 3>              &dof_handler,

@@ -48,6 +48,7 @@ namespace pneuma
       add_update_constraints(
         const DoFHandler<2, 3>                  &dof_handler,
         const std::set<types::global_dof_index> &rigid_slaves,
+        const std::set<types::global_dof_index> &junction_copies,
         AffineConstraints<double>               &constraints) const;
 
       /**
@@ -64,6 +65,15 @@ namespace pneuma
       void
       check_against_mesh(const DoFHandler<2, 3> &dof_handler) const;
 
+      /// Material ids whose nodes are all prescribed (fixed or displaced).
+      std::set<types::material_id>
+      prescribed_regions() const
+      {
+        auto ids = fixed_regions;
+        ids.insert(displaced_regions.begin(), displaced_regions.end());
+        return ids;
+      }
+
     private:
       /// Map of (prescribed dof, value at t) on the locally relevant dofs.
       std::map<types::global_dof_index, double>
@@ -74,6 +84,7 @@ namespace pneuma
       std::map<types::boundary_id, std::array<bool, 3>>     fixed_boundaries;
       std::vector<std::pair<Point<3>, std::array<bool, 3>>> fixed_points;
       std::set<types::material_id>                          fixed_regions;
+      std::set<types::material_id>                          displaced_regions;
       std::set<types::boundary_id>                  displaced_boundaries;
       std::unique_ptr<Functions::ParsedFunction<3>> displacement_function;
     };
