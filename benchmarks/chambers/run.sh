@@ -1,0 +1,72 @@
+#!/bin/bash
+# Chamber benchmarks (issue "Chambers"): wall time, peak memory, Newton
+# iterations and error against the references at three mesh sizes, and the
+# cost of the chamber terms relative to a prescribed-pressure run.
+#   1. V3 sphere through the limit point by volume control (Q2): error of
+#      pR/(mu H) at l = 2 (reference 0.984375);
+#   2. V5 tank (Q2): error of the level h (reference 0.61148 m) and of w0
+#      (48.28 mm);
+#   3. cost: the sphere up to p = 1.2 mu H/R by a chamber with prescribed
+#      pressure, by a chamber with prescribed volume (same path) and by a
+#      plain follower pressure (Loads/Pressure), at the finest size.
+# Usage: benchmarks/chambers/run.sh   (from anywhere; builds if needed)
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/../.." && pwd)"
+[ -x "$root/build/pneuma" ] || "$root/scripts/build.sh" > /dev/null
+pneuma="$root/build/pneuma"
+cd "$here"
+measure() { # name, then pneuma arguments; prints wall s, peak MB
+  /usr/bin/time -f "%e %M" -o time.txt "$pneuma" "$@" > /dev/null
+  read -r wall kb < time.txt
+  echo "$wall $((kb / 1024))"
+}
+field() { # json-ish summary value
+  grep -o "\"$2\": [-0-9.e+]*" "$1/summary.json" | head -1 | awk '{print $NF}'
+}
+echo "## V3 sphere, volume control through the limit point (Q2)"
+echo "| refinements | cells | dofs | steps | Newton its | wall s | peak MB | pR/(muH) at l=2 | error |"
+echo "|---|---|---|---|---|---|---|---|---|"
+for r in 2 3 4; do
+  read -r wall mb < <(measure sphere.prm --set "Geometry/Global refinements=$r")
+  p=$(awk -F, 'NR>1 && $2==1 {print $9}' out/sphere/history.csv)
+  printf "| %s | %s | %s | %s | %s | %s | %s | %.6f | %+.2e |\n" "$r" \
+    "$(field out/sphere cells)" "$(field out/sphere dofs)" \
+    "$(field out/sphere steps)" "$(field out/sphere newton_iterations)" \
+    "$wall" "$mb" "$(awk -v p="$p" 'BEGIN{print p/1000}')" \
+    "$(awk -v p="$p" 'BEGIN{print (p/1000-0.984375)/0.984375}')"
+done
+echo
+echo "## V5 tank (Q2)"
+echo "| refinements | cells | dofs | Newton its | wall s | peak MB | level h [m] | error | w0 [mm] | error |"
+echo "|---|---|---|---|---|---|---|---|---|---|"
+for r in 2 3 4; do
+  read -r wall mb < <(measure tank.prm --set "Geometry/Global refinements=$r")
+  h=$(grep -o '"level": [-0-9.e+]*' out/tank/summary.json | awk '{print $2}')
+  w=$(tail -1 out/tank/history.csv | cut -d, -f7)
+  printf "| %s | %s | %s | %s | %s | %s | %.6f | %+.2e | %.3f | %+.2e |\n" "$r" \
+    "$(field out/tank cells)" "$(field out/tank dofs)" \
+    "$(field out/tank newton_iterations)" "$wall" "$mb" "$h" \
+    "$(awk -v h="$h" 'BEGIN{print (h-0.61148)/0.61148}')" \
+    "$(awk -v w="$w" 'BEGIN{print -1000*w}')" \
+    "$(awk -v w="$w" 'BEGIN{print (-w-0.04828)/0.04828}')"
+done
+echo
+echo "## Cost of the chamber terms (sphere, Q2, 4 refinements, to p = 1.2 mu H/R)"
+echo "| run | Newton its | wall s | assembly s | linear solve s |"
+echo "|---|---|---|---|---|"
+common=(--set "Geometry/Global refinements=4" --set "Load stepping/Stage end times=1"
+        --set "Load stepping/Initial increment=0.1" --set "Load stepping/Maximum increment=0.1")
+cost() {
+  read -r wall mb < <(measure sphere.prm "${common[@]}" "$@")
+  printf "| %s | %s | %s | %s | %s |\n" "$label" \
+    "$(field out/sphere newton_iterations)" "$wall" \
+    "$(field out/sphere assembly)" "$(field out/sphere "linear solve")"
+}
+label="Loads/Pressure (no chamber)"
+cost --set "Chambers/Number of chambers=0" --set "Loads/Pressure/Function expression=1200*t"
+label="chamber, prescribed pressure"
+cost --set "Chambers/Chamber 1/Gas/Control=pressure" --set "Chambers/Chamber 1/Gas/Pressure/Function expression=1200*t"
+label="chamber, prescribed volume"
+cost --set "Chambers/Chamber 1/Gas/Volume/Function expression=1+1.0498*t"
+rm -f time.txt
