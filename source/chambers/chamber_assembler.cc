@@ -143,6 +143,34 @@ namespace pneuma
           }
         return {x, n};
       }
+
+      /// The hydrostatic terms of one wall over its wetted part: the whole
+      /// cell (@p fe_values) if wet, the generated rule if cut.
+      void
+      integrate_wetted(const FreeSurfaceQuadrature::Location       at,
+                       const FreeSurfaceQuadrature                &free_surface,
+                       const Mapping<2, 3>                        &mapping,
+                       const DoFHandler<2, 3>::active_cell_iterator &cell,
+                       const FEValues<2, 3>                       &fe_values,
+                       const std::vector<double>                  &local_u,
+                       const double                                s,
+                       const ChamberLoad                          &load,
+                       const Tensor<1, 3>                         &unit_gravity,
+                       const double                                g,
+                       CellIntegrals                              &out)
+      {
+        if (at == FreeSurfaceQuadrature::Location::wet)
+          integrate(fe_values, local_u, s, load, true, unit_gravity, g, out);
+        else if (at == FreeSurfaceQuadrature::Location::cut)
+          {
+            FEValues<2, 3> cut_values(mapping,
+                                      fe_values.get_fe(),
+                                      free_surface.wet_quadrature(),
+                                      wall_flags);
+            cut_values.reinit(cell);
+            integrate(cut_values, local_u, s, load, true, unit_gravity, g, out);
+          }
+      }
     } // namespace
 
     ChamberAssembler::ChamberAssembler(
@@ -405,31 +433,17 @@ namespace pneuma
               cell_ql       = 0;
               out.q         = with_vectors ? &cell_ql : nullptr;
               const auto at = free_surface.classify(psi);
-              if (at == FreeSurfaceQuadrature::Location::wet)
-                integrate(fe_values,
-                          local_u,
-                          s,
-                          load,
-                          true,
-                          assembler.unit_gravity,
-                          assembler.gravity_magnitude,
-                          out);
-              else if (at == FreeSurfaceQuadrature::Location::cut)
-                {
-                  FEValues<2, 3> cut_values(*assembler.mapping,
-                                            fe_values.get_fe(),
-                                            free_surface.wet_quadrature(),
-                                            wall_flags);
-                  cut_values.reinit(cell);
-                  integrate(cut_values,
-                            local_u,
-                            s,
-                            load,
-                            true,
-                            assembler.unit_gravity,
-                            assembler.gravity_magnitude,
-                            out);
-                }
+              integrate_wetted(at,
+                               free_surface,
+                               *assembler.mapping,
+                               cell,
+                               fe_values,
+                               local_u,
+                               s,
+                               load,
+                               assembler.unit_gravity,
+                               assembler.gravity_magnitude,
+                               out);
               if (with_vectors && at != FreeSurfaceQuadrature::Location::dry)
                 constraints.distribute_local_to_global(cell_ql,
                                                        dof_indices,
@@ -565,31 +579,17 @@ namespace pneuma
               const auto [x_mean, n_mean] = cell_centre_and_normal(fe_values);
               const double s              = wall_sign(
                 geometry, parameters.chambers[c], rs, x_mean, n_mean);
-              if (at == FreeSurfaceQuadrature::Location::wet)
-                integrate(fe_values,
-                          local_u,
-                          s,
-                          load,
-                          true,
-                          unit_gravity,
-                          gravity_magnitude,
-                          out);
-              else
-                {
-                  FEValues<2, 3> cut_values(*mapping,
-                                            fe,
-                                            free_surface.wet_quadrature(),
-                                            wall_flags);
-                  cut_values.reinit(cell);
-                  integrate(cut_values,
-                            local_u,
-                            s,
-                            load,
-                            true,
-                            unit_gravity,
-                            gravity_magnitude,
-                            out);
-                }
+              integrate_wetted(at,
+                               free_surface,
+                               *mapping,
+                               cell,
+                               fe_values,
+                               local_u,
+                               s,
+                               load,
+                               unit_gravity,
+                               gravity_magnitude,
+                               out);
             }
         }
       const MPI_Comm comm = dof_handler->get_communicator();

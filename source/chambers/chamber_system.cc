@@ -301,7 +301,6 @@ namespace pneuma
           }
 
       // Measures with vectors at the predicted levels.
-      const unsigned int           n = parameters.chambers.size();
       std::vector<ChamberMeasures> m;
       unknown_scale.assign(n_total, 1.);
       assembler.assemble(
@@ -558,7 +557,6 @@ namespace pneuma
           if (!g.gas)
             continue;
           const auto  &def   = parameters.chambers[g.leader];
-          const auto  &rep   = chamber_reports[g.leader];
           double       V_gas = 0.;
           for (const auto c : g.members)
             V_gas += chamber_reports[c].gas_volume;
@@ -576,12 +574,13 @@ namespace pneuma
             g.amount = def.gas_law.amount(g.p + p_a, V_gas, p_a);
           else if (!g.sealed)
             g.amount = prescribed_amount(g);
-          (void)rep;
           g.old.pressure = g.p + p_a;
           g.old.volume   = V_gas;
           g.old.amount   = g.amount;
+          // Only the amount changed since record(): no second assembly.
+          for (const auto c : g.members)
+            chamber_reports[c].gas_amount = g.amount;
         }
-      record(u);
     }
 
     void
