@@ -43,6 +43,7 @@ namespace pneuma_test
     pneuma::Simulator::declare_parameters(prm);
     apply(prm,
           {{"Output/Quiet", "true"},
+           {"Output/Directory", "run-output"},
            {"Output/Write VTU", "false"},
            {"Newton/Print convergence table", "false"}});
     apply(prm, settings);

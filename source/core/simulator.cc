@@ -27,6 +27,7 @@ namespace pneuma
     , assembler(geometry, materials, loads)
     , chamber_assembler(geometry, chamber_parameters)
     , chamber_system(chamber_parameters, chamber_assembler)
+    , cable_system(cable_parameters, loads)
   {
   }
 
@@ -56,6 +57,7 @@ namespace pneuma
     solvers::NewtonSolver::declare_parameters(prm);
     solvers::LinearSolver::declare_parameters(prm);
     chambers::ChamberParameters::declare_parameters(prm);
+    cables::CableParameters::declare_parameters(prm);
     OutputParameters::declare_parameters(prm);
   }
 
@@ -75,7 +77,18 @@ namespace pneuma
     s.newton.parse_parameters(prm);
     s.linear_solver.parse_parameters(prm);
     s.chamber_parameters.parse_parameters(prm);
+    s.cable_parameters.parse_parameters(prm);
     s.output.parse_parameters(prm);
+    if (!s.has_membrane())
+      {
+        check_input(!s.cable_parameters.empty(),
+                    "Geometry/Type",
+                    "none (no membrane) needs at least one cable "
+                    "(Cables/Number of cables)");
+        check_input(s.chamber_parameters.empty(),
+                    "Chambers/Number of chambers",
+                    "chambers need a membrane (Geometry/Type is none)");
+      }
     if (s.output.quiet)
       s.pcout.set_condition(false);
   }
@@ -88,6 +101,11 @@ namespace pneuma
   {
     Impl              &s = *impl;
     TimerOutput::Scope t(s.timer, "setup");
+    if (!s.has_membrane())
+      {
+        s.setup_system();
+        return;
+      }
     s.geometry.create_triangulation(s.triangulation);
     s.fe      = std::make_unique<FESystem<2, 3>>(FE_Q<2, 3>(s.degree), 3);
     // The mapped support points of every cell are computed once from the
@@ -121,24 +139,49 @@ namespace pneuma
   void
   Simulator::Impl::setup_system()
   {
-    dof_handler.distribute_dofs(*fe);
-    locally_owned    = dof_handler.locally_owned_dofs();
-    locally_relevant = DoFTools::extract_locally_relevant_dofs(dof_handler);
-    // Rigid plates couple every plate dof to three master nodes, which
-    // every rank must see.
-    if (!rigid_regions.empty())
-      locally_relevant.add_indices(
-        rigid_regions.master_dofs(*mapping, dof_handler));
-    // Junction copies are tied to a master that every rank must see.
-    auto master_regions = rigid_regions.all_ids();
-    for (const auto id : boundary_conditions.prescribed_regions())
-      master_regions.insert(id);
-    junction_ties.find(*mapping, dof_handler, master_regions, locally_relevant);
-    locally_relevant.add_indices(junction_ties.masters);
+    // Global numbering: the membrane dofs, then the cable dofs (owned by
+    // rank 0), then nothing else; the chamber unknowns are the border.
+    types::global_dof_index n_membrane = 0;
+    IndexSet                membrane_owned, membrane_relevant;
+    if (has_membrane())
+      {
+        dof_handler.distribute_dofs(*fe);
+        n_membrane        = dof_handler.n_dofs();
+        membrane_owned    = dof_handler.locally_owned_dofs();
+        membrane_relevant = DoFTools::extract_locally_relevant_dofs(dof_handler);
+      }
+    cable_system.setup(n_membrane, comm);
+    const types::global_dof_index n_total = n_membrane + cable_system.n_dofs();
+    const IndexSet cable_owned = cable_system.locally_owned_dofs(n_total);
+    locally_owned = IndexSet(n_total);
+    locally_owned.add_indices(membrane_owned);
+    locally_owned.add_indices(cable_owned);
+    locally_relevant = IndexSet(n_total);
+    locally_relevant.add_indices(membrane_relevant);
+    locally_relevant.add_indices(cable_owned);
+    if (has_membrane())
+      {
+        // Rigid plates couple every plate dof to three master nodes, which
+        // every rank must see.
+        if (!rigid_regions.empty())
+          locally_relevant.add_indices(
+            rigid_regions.master_dofs(*mapping, dof_handler));
+        // Junction copies are tied to a master that every rank must see.
+        auto master_regions = rigid_regions.all_ids();
+        for (const auto id : boundary_conditions.prescribed_regions())
+          master_regions.insert(id);
+        IndexSet relevant_membrane(n_membrane);
+        relevant_membrane.add_indices(membrane_relevant);
+        junction_ties.find(*mapping, dof_handler, master_regions, relevant_membrane);
+        for (const auto i : junction_ties.masters)
+          locally_relevant.add_index(i);
+      }
     make_constraints();
 
     DynamicSparsityPattern dsp(locally_relevant);
-    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+    if (has_membrane())
+      DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+    cable_system.add_sparsity(dsp, constraints);
     SparsityTools::distribute_sparsity_pattern(dsp,
                                                locally_owned,
                                                comm,
@@ -148,10 +191,14 @@ namespace pneuma
     external.reinit(locally_owned, comm);
     ghosted.reinit(locally_owned, locally_relevant, comm);
 
-    assembler.reinit(*mapping, dof_handler, degree);
-    chamber_assembler.reinit(*mapping, dof_handler, degree);
     laplacian.reinit(locally_owned, locally_owned, dsp, comm);
-    assembler.surface_laplacian(constraints, laplacian);
+    if (has_membrane())
+      {
+        assembler.reinit(*mapping, dof_handler, degree);
+        chamber_assembler.reinit(*mapping, dof_handler, degree);
+        assembler.surface_laplacian(constraints, laplacian);
+      }
+    cable_system.assemble_regularisation(constraints, laplacian);
 
     // AMG near-null space: the three rigid translations, i.e. one
     // indicator per displacement component over the owned dofs.
@@ -159,12 +206,21 @@ namespace pneuma
       3, std::vector<bool>(locally_owned.n_elements()));
     for (unsigned int c = 0; c < 3; ++c)
       {
-        std::vector<bool> mask(3, false);
-        mask[c] = true;
-        const IndexSet dofs =
-          DoFTools::extract_dofs(dof_handler, ComponentMask(mask));
+        IndexSet dofs(n_total);
+        if (has_membrane())
+          {
+            std::vector<bool> mask(3, false);
+            mask[c] = true;
+            dofs.add_indices(
+              DoFTools::extract_dofs(dof_handler, ComponentMask(mask)));
+          }
         for (unsigned int k = 0; k < locally_owned.n_elements(); ++k)
-          modes[c][k] = dofs.is_element(locally_owned.nth_index_in_set(k));
+          {
+            const auto i = locally_owned.nth_index_in_set(k);
+            modes[c][k]  = i < n_membrane ?
+                             dofs.is_element(i) :
+                             cable_system.translation_component(i) == int(c);
+          }
       }
     linear_solver.set_constant_modes(modes);
     linear_solver.reset();
@@ -177,18 +233,26 @@ namespace pneuma
     // prescribed components of the Newton update.
     kinematic_constraints.clear();
     kinematic_constraints.reinit(locally_relevant);
-    DoFTools::make_hanging_node_constraints(dof_handler, kinematic_constraints);
-    rigid_regions.add_constraints(*mapping, dof_handler, kinematic_constraints);
-    junction_ties.add_constraints(kinematic_constraints);
+    if (has_membrane())
+      {
+        DoFTools::make_hanging_node_constraints(dof_handler,
+                                                kinematic_constraints);
+        rigid_regions.add_constraints(*mapping,
+                                      dof_handler,
+                                      kinematic_constraints);
+        junction_ties.add_constraints(kinematic_constraints);
+      }
     kinematic_constraints.close();
 
     constraints.clear();
     constraints.reinit(locally_relevant);
     constraints.merge(kinematic_constraints);
-    boundary_conditions.add_update_constraints(dof_handler,
-                                               rigid_regions.slave_dofs(),
-                                               junction_ties.copies(),
-                                               constraints);
+    if (has_membrane())
+      boundary_conditions.add_update_constraints(dof_handler,
+                                                 rigid_regions.slave_dofs(),
+                                                 junction_ties.copies(),
+                                                 constraints);
+    cable_system.add_support_constraints(constraints);
     constraints.close();
   }
 
@@ -206,9 +270,26 @@ namespace pneuma
     request.residual = &residual.field;
     request.tangent  = &tangent;
     request.external = &external;
+    if (!has_membrane())
+      {
+        tangent          = 0.;
+        residual.field   = 0.;
+        external         = 0.;
+      }
+    else if (chamber_parameters.empty())
+      assembler.assemble(ghosted, constraints, request);
     if (chamber_parameters.empty())
       {
-        assembler.assemble(ghosted, constraints, request);
+        if (!cable_system.empty())
+          {
+            TimerOutput::Scope tc(timer, "cable assembly");
+            cable_system.assemble(current_time,
+                                  ghosted,
+                                  constraints,
+                                  &tangent,
+                                  &residual.field,
+                                  &external);
+          }
         residual.border.reinit(0);
         return;
       }
@@ -227,6 +308,12 @@ namespace pneuma
     };
     assembler.assemble(ghosted, constraints, request);
     pass.finish();
+    if (!cable_system.empty())
+      {
+        TimerOutput::Scope tc(timer, "cable assembly");
+        cable_system.assemble(
+          current_time, ghosted, constraints, &tangent, &residual.field, &external);
+      }
     chamber_system.evaluate(u.border, chamber_measures, residual.border);
   }
 
@@ -272,6 +359,33 @@ namespace pneuma
   double
   Simulator::Impl::shift_scale()
   {
+    if (!has_membrane())
+      {
+        // Cables only: a hanging, unstressed cable is a mechanism, and the
+        // shift s of the continuation acts as an axial force s in it. Under
+        // a load W (nodal loads f) a first regularised step deflects the
+        // cable by about W L/(8 s), i.e. turns it by W/(2 s), which
+        // stretches it by (W/(2 s))^2/2 and adds an axial force EA times
+        // that; the step is accepted if that error stays below the nodal
+        // load f: s >= W sqrt(EA/(8 f)). Nor should s be below the total
+        // load, the order of the forces the cable will carry.
+        double load = 0., f_max = 0.;
+        for (const auto i : locally_owned)
+          {
+            load += std::abs(external[i]);
+            f_max = std::max(f_max, std::abs(external[i]));
+          }
+        load  = Utilities::MPI::sum(load, comm);
+        f_max = Utilities::MPI::max(f_max, comm);
+        const double s0 =
+          f_max > 0. ?
+            std::max(load,
+                     load * std::sqrt(cable_system.axial_stiffness() /
+                                      (8. * f_max))) :
+            0.;
+        if (s0 > 0. && newton.regularisation_factor() > 0.)
+          return s0 / newton.regularisation_factor();
+      }
     double k_sum = 0., m_sum = 0.;
     for (const auto i : locally_owned)
       if (!constraints.is_constrained(i))
@@ -299,6 +413,54 @@ namespace pneuma
     const double c =
       chamber_parameters.empty() ? 0. : chamber_system.force_scale();
     return std::sqrt(f * f + c * c);
+  }
+
+  std::vector<CableState>
+  Simulator::Impl::cable_states()
+  {
+    // Computed on rank 0 (it owns the cable dofs), then shared.
+    constexpr unsigned int  n_values = 21;
+    std::vector<double>     packed(n_values * cable_parameters.size(), 0.);
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        const auto reports = cable_system.reports(current_time, solution);
+        for (unsigned int k = 0; k < reports.size(); ++k)
+          {
+            const auto &r = reports[k];
+            double     *v = &packed[n_values * k];
+            v[0] = r.max_force, v[1] = r.min_force, v[2] = r.length;
+            v[3] = r.max_bending, v[4] = r.max_torsion;
+            v[20] = r.end_rotation;
+            for (unsigned int c = 0; c < 3; ++c)
+              {
+                v[5 + c]  = r.start_reaction[c];
+                v[8 + c]  = r.end_reaction[c];
+                v[11 + c] = r.start_displacement[c];
+                v[14 + c] = r.end_displacement[c];
+                v[17 + c] = r.mid_displacement[c];
+              }
+          }
+      }
+    if (!packed.empty())
+      MPI_Bcast(packed.data(), packed.size(), MPI_DOUBLE, 0, comm);
+    std::vector<CableState> states(cable_parameters.size());
+    for (unsigned int k = 0; k < states.size(); ++k)
+      {
+        const double *v = &packed[n_values * k];
+        auto         &s = states[k];
+        s.max_force = v[0], s.min_force = v[1], s.length = v[2];
+        s.max_bending = v[3], s.max_torsion = v[4];
+        s.end_rotation = v[20];
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            s.start_reaction[c]     = v[5 + c];
+            s.end_reaction[c]       = v[8 + c];
+            s.start_displacement[c] = v[11 + c];
+            s.end_displacement[c]   = v[14 + c];
+            s.mid_displacement[c]   = v[17 + c];
+          }
+      }
+    return states;
   }
 
   std::vector<ChamberState>
@@ -335,10 +497,13 @@ namespace pneuma
   Simulator::Impl::run()
   {
     RunSummary summary;
-    summary.n_cells = triangulation.n_global_active_cells();
-    summary.n_dofs  = dof_handler.n_dofs();
-    pcout << "pneuma: " << summary.n_cells << " membrane cells, "
-          << summary.n_dofs << " dofs, degree " << degree << ", "
+    summary.n_cells = has_membrane() ? triangulation.n_global_active_cells() : 0;
+    summary.n_cable_cells = cable_system.n_cells();
+    summary.n_dofs        = locally_owned.size();
+    pcout << "pneuma: " << summary.n_cells << " membrane cells, ";
+    if (!cable_system.empty())
+      pcout << summary.n_cable_cells << " cable elements, ";
+    pcout << summary.n_dofs << " dofs, degree " << degree << ", "
           << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)\n";
 
     prepare_output_directory();
@@ -346,10 +511,12 @@ namespace pneuma
 
     solution     = 0.;
     current_time = 0.;
-    boundary_conditions.set_prescribed_values(*mapping,
-                                              dof_handler,
-                                              0.,
-                                              solution);
+    if (has_membrane())
+      boundary_conditions.set_prescribed_values(*mapping,
+                                                dof_handler,
+                                                0.,
+                                                solution);
+    cable_system.set_prescribed_values(0., solution);
     ghosted = solution;
     if (geometry.is_closed())
       initial_volume = assembler.enclosed_volume(ghosted);
@@ -378,10 +545,12 @@ namespace pneuma
         const double t_new = stepping.next_time(t_old, dt);
         last_converged     = solution;
         current_time       = t_new;
-        boundary_conditions.set_prescribed_values(*mapping,
-                                                  dof_handler,
-                                                  t_new,
-                                                  solution);
+        if (has_membrane())
+          boundary_conditions.set_prescribed_values(*mapping,
+                                                    dof_handler,
+                                                    t_new,
+                                                    solution);
+        cable_system.set_prescribed_values(t_new, solution);
         apply_kinematic_constraints();
         pcout << "Step " << step + 1 << "  t = " << t_new
               << "  dt = " << t_new - t_old << std::endl;
@@ -451,6 +620,7 @@ namespace pneuma
 
         // Converged step.
         ++step;
+        cable_system.commit_step(solution);
         summary.step_iterations.push_back(result.iterations);
         if (with_chambers)
           {
@@ -497,6 +667,7 @@ namespace pneuma
     compute_reactions(summary.reaction, summary.applied_load);
     if (with_chambers)
       summary.chambers = chamber_states();
+    summary.cables       = cable_states();
     summary.wall_seconds = wall_clock.wall_time();
     write_summary(summary);
     return summary;

@@ -10,6 +10,8 @@
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/lac/affine_constraints.h>
 
+#include <pneuma/cables/cable_parameters.h>
+#include <pneuma/cables/cable_system.h>
 #include <pneuma/chambers/chamber_assembler.h>
 #include <pneuma/chambers/chamber_parameters.h>
 #include <pneuma/chambers/chamber_system.h>
@@ -126,7 +128,18 @@ namespace pneuma
     solvers::LoadStepping     stepping;
     OutputParameters          output;
     chambers::ChamberParameters chamber_parameters;
+    cables::CableParameters   cable_parameters;
     unsigned int              degree = 1;
+
+    /// False for Geometry/Type = none (a scene of cables only).
+    bool
+    has_membrane() const
+    {
+      return geometry.type() != "none";
+    }
+    /// Cable states at the current solution (rank 0; empty elsewhere).
+    std::vector<CableState>
+    cable_states();
 
     // Discretisation.
     parallel::distributed::Triangulation<2, 3> triangulation;
@@ -144,6 +157,8 @@ namespace pneuma
     chambers::ChamberAssembler                 chamber_assembler;
     chambers::ChamberSystem                    chamber_system;
     std::vector<chambers::ChamberMeasures>     chamber_measures;
+    /// The cable block (own meshes and DoFHandlers; rank 0 owns its dofs).
+    cables::CableSystem                        cable_system;
 
     // State.
     LA::SparseMatrix tangent, laplacian;

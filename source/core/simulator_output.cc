@@ -103,6 +103,20 @@ namespace pneuma
                                    "wetted_area",
                                    "gas_amount"})
             *history << ",c" << c << "_" << name;
+        for (unsigned int k = 1; k <= cable_parameters.size(); ++k)
+          for (const char *name : {"max_force",
+                                   "min_force",
+                                   "length",
+                                   "start_rx",
+                                   "start_ry",
+                                   "start_rz",
+                                   "end_rx",
+                                   "end_ry",
+                                   "end_rz",
+                                   "mid_ux",
+                                   "mid_uy",
+                                   "mid_uz"})
+            *history << ",cable" << k << "_" << name;
         *history << "\n";
       }
   }
@@ -112,6 +126,8 @@ namespace pneuma
   {
     monitor_dofs.clear();
     monitor_positions.clear();
+    if (!has_membrane())
+      return;
     for (const auto &p : output.monitor_points)
       {
         double local_min = std::numeric_limits<double>::max();
@@ -181,6 +197,7 @@ namespace pneuma
     const double volume =
       geometry.is_closed() ? assembler.enclosed_volume(ghosted) : 0.;
     const auto monitors = monitor_displacements();
+    const auto cables   = cable_states();
     if (history)
       {
         *history << step << ',' << std::setprecision(10) << t << ','
@@ -195,6 +212,15 @@ namespace pneuma
                    << c.volume << ',' << c.gas_volume << ',' << c.liquid_volume
                    << ',' << c.level << ',' << c.wetted_area << ','
                    << c.gas_amount;
+        for (const auto &c : cables)
+          {
+            *history << ',' << c.max_force << ',' << c.min_force << ','
+                     << c.length;
+            for (const auto *v : {&c.start_reaction,
+                                  &c.end_reaction,
+                                  &c.mid_displacement})
+              *history << ',' << (*v)[0] << ',' << (*v)[1] << ',' << (*v)[2];
+          }
         *history << std::endl;
       }
   }
@@ -207,6 +233,10 @@ namespace pneuma
     // Never write a non-finite state.
     AssertThrow(std::isfinite(solution.l2_norm()),
                 ExcMessage("refusing to write a non-finite solution"));
+    if (!cable_system.empty())
+      cable_system.write_output(output.directory, step, t, ghosted);
+    if (!has_membrane())
+      return;
 
     const postprocess::CellFields fields = postprocess::membrane_cell_fields(
       *mapping, dof_handler, materials, ghosted);
@@ -259,7 +289,12 @@ namespace pneuma
   {
     // Residual with hanging-node and rigid-plate forces condensed onto the
     // independent dofs: at a prescribed dof, f_int - f_ext is the force the
-    // support exerts on the structure (the reaction).
+    // support exerts on the structure (the reaction). Membrane only; the
+    // cable supports are in the cable reports.
+    reaction.fill(0.);
+    applied.fill(0.);
+    if (!has_membrane())
+      return;
     LA::Vector residual(solution), ext(solution);
     ghosted = solution;
     membrane::AssemblyRequest request;
@@ -344,6 +379,34 @@ namespace pneuma
              << ", \"gas_amount\": " << r.gas_amount << "}";
       }
     json << (summary.chambers.empty() ? "" : "\n  ") << "],\n"
+         << "  \"cable_elements\": " << summary.n_cable_cells << ",\n"
+         << "  \"cables\": [";
+    const auto triple = [&json](const std::array<double, 3> &v) {
+      json << "[" << v[0] << ", " << v[1] << ", " << v[2] << "]";
+    };
+    for (unsigned int k = 0; k < summary.cables.size(); ++k)
+      {
+        const auto &c = summary.cables[k];
+        json << (k ? ",\n" : "\n") << "    {\"cable\": " << k + 1
+             << ", \"max_force\": " << c.max_force
+             << ", \"min_force\": " << c.min_force
+             << ", \"length\": " << c.length
+             << ", \"max_bending_moment\": " << c.max_bending
+             << ", \"max_torsion_moment\": " << c.max_torsion
+             << ", \"end_rotation\": " << c.end_rotation
+             << ", \"start_reaction\": ";
+        triple(c.start_reaction);
+        json << ", \"end_reaction\": ";
+        triple(c.end_reaction);
+        json << ", \"start_displacement\": ";
+        triple(c.start_displacement);
+        json << ", \"end_displacement\": ";
+        triple(c.end_displacement);
+        json << ", \"mid_displacement\": ";
+        triple(c.mid_displacement);
+        json << "}";
+      }
+    json << (summary.cables.empty() ? "" : "\n  ") << "],\n"
          << "  \"monitor_points\": [";
     for (unsigned int m = 0; m < summary.monitor_displacements.size(); ++m)
       {
@@ -387,6 +450,17 @@ namespace pneuma
             out << "chamber " << c + 1 << " p = " << r.pressure
                 << " V = " << r.volume << " V_liquid = " << r.liquid_volume
                 << " level = " << r.level << "\n";
+          }
+        for (unsigned int k = 0; k < summary.cables.size(); ++k)
+          {
+            const auto &c = summary.cables[k];
+            out << "cable " << k + 1 << " N_max = " << c.max_force
+                << " N_min = " << c.min_force << " length = " << c.length
+                << " start_reaction = " << c.start_reaction[0] << " "
+                << c.start_reaction[1] << " " << c.start_reaction[2]
+                << " mid_u = " << c.mid_displacement[0] << " "
+                << c.mid_displacement[1] << " " << c.mid_displacement[2]
+                << "\n";
           }
       }
   }

@@ -27,9 +27,9 @@ namespace pneuma
       prm.declare_entry("Type",
                         "closed cylinder",
                         Patterns::Selection(
-                          "disc|square|sphere|closed cylinder|gmsh"),
-                        "Membrane surface: a built-in generator or a Gmsh "
-                        "mesh file.");
+                          "disc|square|sphere|closed cylinder|gmsh|none"),
+                        "Membrane surface: a built-in generator, a Gmsh "
+                        "mesh file, or none (a scene of cables only).");
       prm.declare_entry("Radius",
                         "0.23",
                         Patterns::Double(),

@@ -8,6 +8,9 @@
 #include <Amesos_Mumps.h>
 #include <Epetra_LinearProblem.h>
 
+#include <iostream>
+#include <sstream>
+
 namespace pneuma
 {
   namespace solvers
@@ -88,6 +91,11 @@ namespace pneuma
               AssertThrow(direct != nullptr,
                           ExcMessage("Amesos solver " + direct_package
                                      + " is not available"));
+              // Failures are reported by the caller, not printed by Amesos.
+              Teuchos::ParameterList amesos_parameters;
+              amesos_parameters.set("OutputLevel", 0);
+              amesos_parameters.set("PrintStatus", false);
+              direct->SetParameters(amesos_parameters);
               if (auto *mumps = dynamic_cast<Amesos_Mumps *>(direct.get()))
                 mumps->SetICNTL(7,
                                 ordering == "metis" ? 5
@@ -97,9 +105,20 @@ namespace pneuma
                           ExcMessage("symbolic factorization failed"));
               factored_matrix = &A.trilinos_matrix();
             }
-          AssertThrow(direct->NumericFactorization() == 0,
-                      ExcMessage("numeric factorization failed (singular "
-                                 "tangent)"));
+          // Amesos prints MUMPS failures on std::cerr itself; the caller
+          // reports them (and recovers), so they are kept off the streams.
+          std::ostringstream sink;
+          auto *const        err_buf = std::cerr.rdbuf(sink.rdbuf());
+          const int          status  = direct->NumericFactorization();
+          std::cerr.rdbuf(err_buf);
+          if (status != 0)
+            {
+              // MUMPS is left in an error state: start afresh next time.
+              reset();
+              AssertThrow(false,
+                          ExcMessage("numeric factorization failed (singular "
+                                     "tangent)"));
+            }
           return;
         }
 

@@ -136,10 +136,18 @@ namespace pneuma
               u_trial = u;
               u_trial.add(alpha, step);
               trial_norm = evaluate(u_trial, trial);
+              // A full step is also accepted when the directional
+              // derivative of the energy along it has dropped by half
+              // (energy line search): stiff section or axial modes may
+              // raise |r| on the way to convergence (solid beams).
+              const bool energy_drop =
+                alpha == 1. && std::isfinite(trial_norm) &&
+                trial_norm <= 1e3 * r_norm &&
+                std::abs(step * trial) <= 0.5 * std::abs(step * residual);
               if (!line_search
                   || (std::isfinite(trial_norm)
                       && (trial_norm <= (1. - 1e-4 * alpha) * r_norm
-                          || trial_norm <= tolerance * r_ref)))
+                          || trial_norm <= tolerance * r_ref || energy_drop)))
                 {
                   accepted = true;
                   break;

@@ -36,12 +36,30 @@ namespace pneuma
            wetted_area = 0., gas_amount = 0., pv_kappa = 0.;
   };
 
+  /// State of one cable (doc/user-guide.md "Cables").
+  struct CableState
+  {
+    /// Largest and smallest axial force [N], current length [m].
+    double max_force = 0., min_force = 0., length = 0.;
+    /// Solid-beam: largest bending and torsion moments [N m].
+    double max_bending = 0., max_torsion = 0.;
+    /// Solid-beam with an end moment: rotation of the end section about the
+    /// moment axis [rad].
+    double end_rotation = 0.;
+    /// Support reactions (force on the cable) at the start and end [N].
+    std::array<double, 3> start_reaction{{0., 0., 0.}},
+      end_reaction{{0., 0., 0.}};
+    /// Displacements of the start, end and middle node [m].
+    std::array<double, 3> start_displacement{{0., 0., 0.}},
+      end_displacement{{0., 0., 0.}}, mid_displacement{{0., 0., 0.}};
+  };
+
   /// What a finished run reports (also written to summary.json).
   struct RunSummary
   {
     int          exit_code = success;
     std::string  message;
-    unsigned int n_cells = 0, n_dofs = 0, n_steps = 0, n_cutbacks = 0,
+    unsigned int n_cells = 0, n_cable_cells = 0, n_dofs = 0, n_steps = 0, n_cutbacks = 0,
                  n_newton_iterations = 0, n_linear_solves = 0;
     double final_time = 0., wall_seconds = 0.;
     /// Displacement at each monitor point at the end of the run.
@@ -58,6 +76,8 @@ namespace pneuma
     /// states); empty without chambers.
     std::vector<ChamberState> chambers;
     std::vector<std::pair<double, std::vector<ChamberState>>> chamber_history;
+    /// Cable states at the end (empty without cables).
+    std::vector<CableState> cables;
     /// Newton iterations of every converged step.
     std::vector<unsigned int> step_iterations;
   };

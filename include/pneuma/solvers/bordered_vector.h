@@ -59,6 +59,13 @@ namespace pneuma
         border.add(a, v.border);
       }
 
+      /// Scalar product (field and border).
+      double
+      operator*(const BorderedVector &v) const
+      {
+        return field * v.field + border * v.border;
+      }
+
       double
       l2_norm() const
       {

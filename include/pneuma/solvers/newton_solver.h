@@ -95,6 +95,14 @@ namespace pneuma
         return max_iter;
       }
 
+      /// The first continuation shift relative to NonlinearProblem::
+      /// shift_scale().
+      double
+      regularisation_factor() const
+      {
+        return shift_factor;
+      }
+
     private:
       /// Newton on r(u) + shift L (u - u_anchor) = 0 to |r_s| <= tol r_ref.
       bool

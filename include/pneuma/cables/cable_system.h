@@ -1,0 +1,178 @@
+#pragma once
+
+/**
+ * @file
+ * The cables of a scene as one block of the global system
+ * (doc/theory.md §8, doc/user-guide.md "Cables").
+ *
+ * Each cable has its own `Triangulation<1,3>` and `DoFHandler<1,3>`; every
+ * rank holds the whole cable mesh (p4est does not distribute 1D meshes).
+ * The cable unknowns follow the membrane unknowns in the global numbering:
+ * cable k's dof i is global index first + offset_k + i. Rank 0 owns all
+ * cable dofs and assembles the cable block; later couplings (contact) add
+ * off-diagonal blocks to the same matrix.
+ *
+ * Unknowns per node: the displacement of the mid-line (cable element, 3),
+ * or the displacement of the mid-line and the changes of the two section
+ * semi-axis vectors (solid-beam, 9). A scene without cables has no cable
+ * unknowns and does no cable work.
+ */
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <pneuma/cables/cable_parameters.h>
+#include <pneuma/core/linear_algebra.h>
+#include <pneuma/loads/loads.h>
+
+#include <array>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace pneuma
+{
+  namespace cables
+  {
+    class SolidBeamElement;
+
+    /// What a cable reports after a converged step.
+    struct CableReport
+    {
+      /// Largest and smallest axial force along the cable [N].
+      double max_force = 0., min_force = 0.;
+      /// Current length of the mid-line [m].
+      double length = 0.;
+      /// Support reactions at the start and end (force on the cable) [N].
+      std::array<double, 3> start_reaction{{0., 0., 0.}},
+        end_reaction{{0., 0., 0.}};
+      /// Displacement of the start, end, and middle node [m].
+      std::array<double, 3> start_displacement{{0., 0., 0.}},
+        end_displacement{{0., 0., 0.}}, mid_displacement{{0., 0., 0.}};
+      /// Solid-beam only: largest bending and torsion moments [N m].
+      double max_bending = 0., max_torsion = 0.;
+      /// Solid-beam with an end moment: rotation of the end section about
+      /// the moment axis since the start [rad].
+      double end_rotation = 0.;
+    };
+
+    /// The cable block of the global system.
+    class CableSystem
+    {
+    public:
+      CableSystem(const CableParameters &parameters, const loads::Loads &loads);
+      ~CableSystem();
+
+      /// Build the meshes and number the cable dofs from @p first on.
+      void
+      setup(const types::global_dof_index first, const MPI_Comm comm);
+
+      bool
+      empty() const
+      {
+        return bodies.empty();
+      }
+      /// Number of cable unknowns.
+      types::global_dof_index
+      n_dofs() const
+      {
+        return n_cable_dofs;
+      }
+      /// Largest axial stiffness EA of the cables [N].
+      double
+      axial_stiffness() const;
+      /// Number of cable elements.
+      unsigned int
+      n_cells() const;
+      /// The cable dofs owned here (all on rank 0), in a set of @p size.
+      IndexSet
+      locally_owned_dofs(const types::global_dof_index size) const;
+
+      /// Homogeneous constraints of the supported end dofs (for the Newton
+      /// update).
+      void
+      add_support_constraints(AffineConstraints<double> &constraints) const;
+      /// Set the supported end dofs of @p solution to their prescribed
+      /// values at pseudo time @p t (owned entries).
+      void
+      set_prescribed_values(const double t, LA::Vector &solution) const;
+      /// The couplings of the cable elements.
+      void
+      add_sparsity(DynamicSparsityPattern          &dsp,
+                   const AffineConstraints<double> &constraints) const;
+
+      /**
+       * Add the cable terms at @p u (ghosted, or owned here) to the
+       * residual r = f_int - f_ext, the tangent and the external load
+       * vector (each may be nullptr); compresses what it touched.
+       */
+      void
+      assemble(const double                     t,
+               const LA::Vector                &u,
+               const AffineConstraints<double> &constraints,
+               LA::SparseMatrix                *tangent,
+               LA::Vector                      *residual,
+               LA::Vector                      *external) const;
+
+      /// The regularisation matrix of the pseudo-time continuation: the
+      /// geometric stiffness of a unit axial force, int N_i' N_j' dS.
+      void
+      assemble_regularisation(const AffineConstraints<double> &constraints,
+                              LA::SparseMatrix                &matrix) const;
+
+      /// For the AMG near-null space: the displacement component (0..2) of
+      /// owned cable dof @p i, or -1 (solid-beam section unknowns).
+      int
+      translation_component(const types::global_dof_index i) const;
+
+      /// Accept the converged state @p u (tracks the end-section rotation
+      /// of a solid beam loaded by a moment).
+      void
+      commit_step(const LA::Vector &u);
+
+      /// Reports of every cable at @p u (valid on rank 0).
+      std::vector<CableReport>
+      reports(const double t, const LA::Vector &u) const;
+
+      /// Write cables_<k>_<step>.vtu and the cables.pvd record (rank 0).
+      void
+      write_output(const std::string &directory,
+                   const unsigned int step,
+                   const double       t,
+                   const LA::Vector  &u);
+
+    private:
+      struct Body;
+
+      /// Per-cell element terms in the local numbering of body @p b.
+      void
+      cell_terms(const Body                                  &b,
+                 const DoFHandler<1, 3>::active_cell_iterator &cell,
+                 const double                                 t,
+                 const Vector<double>                        &local_u,
+                 FullMatrix<double>                          *cell_matrix,
+                 Vector<double>                              *cell_residual,
+                 Vector<double>                              *cell_external,
+                 std::vector<double>                         *cell_output)
+        const;
+
+      /// The body's dofs of @p u (replicated local copy).
+      Vector<double>
+      extract(const Body &b, const LA::Vector &u) const;
+
+      const CableParameters                &parameters;
+      const loads::Loads                   &loads;
+      MPI_Comm                              comm = MPI_COMM_SELF;
+      bool                                  is_owner = true;
+      std::vector<std::unique_ptr<Body>>    bodies;
+      types::global_dof_index               first = 0, n_cable_dofs = 0;
+      std::vector<std::pair<double, std::string>> pvd_records;
+    };
+  } // namespace cables
+} // namespace pneuma

@@ -1,0 +1,783 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/numerics/data_out.h>
+
+#include <pneuma/cables/cable_element.h>
+#include <pneuma/cables/cable_geometry.h>
+#include <pneuma/cables/cable_system.h>
+#include <pneuma/cables/solid_beam_element.h>
+#include <pneuma/core/input_error.h>
+
+#include <fstream>
+#include <limits>
+
+namespace pneuma
+{
+  namespace cables
+  {
+    struct CableSystem::Body
+    {
+      explicit Body(const CableDefinition &d)
+        : definition(d)
+        , dof_handler(tria)
+      {
+      }
+
+      const CableDefinition         &definition;
+      Triangulation<1, 3>            tria;
+      std::unique_ptr<FESystem<1, 3>> fe;
+      DoFHandler<1, 3>               dof_handler;
+      unsigned int                   n_components = 3;
+      /// Global index of local dof 0.
+      types::global_dof_index offset = 0;
+      /// Reference values of every local dof: position (components 0-2),
+      /// semi-axis vectors A1, A2 (3-5, 6-8).
+      Vector<double> reference;
+      /// Reference length / unstressed length.
+      double rho = 1., reference_length = 0.;
+      /// Local dofs of the start, end and middle node (all components).
+      std::vector<types::global_dof_index> start_dofs, end_dofs, mid_dofs;
+      Point<3>                             start_point, end_point;
+      std::unique_ptr<TensionOnlyCable>    cable;
+      std::unique_ptr<SolidBeamElement>    beam;
+      /// End-moment tracking: the end semi-axis vectors and their angles
+      /// about the moment axis at the last converged step.
+      std::array<Tensor<1, 3>, 2> moment_axes;
+      std::array<double, 2>       moment_angles{{0., 0.}};
+      double                      section_rotation = 0.;
+    };
+
+    namespace
+    {
+      const MappingQ1<1, 3> &
+      mapping()
+      {
+        static const MappingQ1<1, 3> m;
+        return m;
+      }
+
+      template <typename Iterator>
+      Tensor<1, 3>
+      cell_tangent(const Iterator &cell)
+      {
+        const Tensor<1, 3> d = cell->vertex(1) - cell->vertex(0);
+        return d / d.norm();
+      }
+    } // namespace
+
+    CableSystem::CableSystem(const CableParameters &parameters,
+                             const loads::Loads    &loads)
+      : parameters(parameters)
+      , loads(loads)
+    {
+    }
+
+    CableSystem::~CableSystem() = default;
+
+    double
+    CableSystem::axial_stiffness() const
+    {
+      double EA = 0.;
+      for (unsigned int k = 0; k < parameters.size(); ++k)
+        EA = std::max(EA, parameters[k].youngs_modulus * parameters[k].area());
+      return EA;
+    }
+
+    unsigned int
+    CableSystem::n_cells() const
+    {
+      unsigned int n = 0;
+      for (const auto &b : bodies)
+        n += b->tria.n_active_cells();
+      return n;
+    }
+
+    void
+    CableSystem::setup(const types::global_dof_index first_dof,
+                       const MPI_Comm                comm_)
+    {
+      comm     = comm_;
+      is_owner = Utilities::MPI::this_mpi_process(comm) == 0;
+      first    = first_dof;
+      bodies.clear();
+      types::global_dof_index next = first;
+      for (unsigned int k = 0; k < parameters.size(); ++k)
+        {
+          const CableDefinition &d = parameters[k];
+          auto                   b = std::make_unique<Body>(d);
+          create_cable_mesh(d, b->tria);
+          const bool beam = d.element == CableElement::solid_beam;
+          b->n_components = beam ? 9 : 3;
+          b->fe = std::make_unique<FESystem<1, 3>>(FE_Q<1, 3>(1),
+                                                   b->n_components);
+          b->dof_handler.distribute_dofs(*b->fe);
+          b->offset = next;
+          next += b->dof_handler.n_dofs();
+
+          // Reference length and the prestress ratio rho = L_ref / L_0.
+          for (const auto &cell : b->tria.active_cell_iterators())
+            b->reference_length += cell->diameter();
+          const double EA = d.youngs_modulus * d.area();
+          if (d.prestress_force > 0.)
+            b->rho = 1. + d.prestress_force / EA;
+          else if (d.unstressed_length > 0.)
+            b->rho = b->reference_length / d.unstressed_length;
+          if (beam)
+            b->beam = std::make_unique<SolidBeamElement>(d, b->rho);
+          else
+            b->cable =
+              std::make_unique<TensionOnlyCable>(EA, b->rho, d.slack_ratio);
+
+          // Node tangents (mean of the adjacent cells) for the sections.
+          const unsigned int        n_v = b->tria.n_vertices();
+          std::vector<Tensor<1, 3>> node_tangent(n_v);
+          std::vector<unsigned int> n_adjacent(n_v, 0);
+          for (const auto &cell : b->tria.active_cell_iterators())
+            for (unsigned int v = 0; v < 2; ++v)
+              {
+                node_tangent[cell->vertex_index(v)] += cell_tangent(cell);
+                ++n_adjacent[cell->vertex_index(v)];
+              }
+          b->reference.reinit(b->dof_handler.n_dofs());
+          for (const auto &cell : b->dof_handler.active_cell_iterators())
+            for (unsigned int v = 0; v < 2; ++v)
+              {
+                const Point<3> X = cell->vertex(v);
+                for (unsigned int c = 0; c < 3; ++c)
+                  b->reference[cell->vertex_dof_index(v, c)] = X[c];
+                if (!beam)
+                  continue;
+                Tensor<1, 3> t = node_tangent[cell->vertex_index(v)];
+                t /= t.norm();
+                Tensor<1, 3> e1 = d.section_axis;
+                if (d.shape == CableShape::ring ||
+                    d.shape == CableShape::helix)
+                  {
+                    const Tensor<1, 3> a = d.axis / d.axis.norm();
+                    e1                   = X - d.centre;
+                    e1 -= (e1 * a) * a;
+                  }
+                e1 -= (e1 * t) * t;
+                check_input(e1.norm() > 1e-8,
+                            d.path + "/Section axis",
+                            "is parallel to the cable at a node");
+                e1 /= e1.norm();
+                const Tensor<1, 3> e2 = cross_product_3d(t, e1);
+                for (unsigned int c = 0; c < 3; ++c)
+                  {
+                    b->reference[cell->vertex_dof_index(v, 3 + c)] =
+                      d.section_a * e1[c];
+                    b->reference[cell->vertex_dof_index(v, 6 + c)] =
+                      d.section_b * e2[c];
+                  }
+              }
+
+          // Ends: the boundary vertices; the start is the one nearest to the
+          // first vertex of the mesh. The middle: the node nearest to half
+          // the arc length along the cells.
+          std::vector<std::pair<Point<3>, std::vector<types::global_dof_index>>>
+            ends;
+          for (const auto &cell : b->dof_handler.active_cell_iterators())
+            for (unsigned int v = 0; v < 2; ++v)
+              if (cell->at_boundary(v))
+                {
+                  std::vector<types::global_dof_index> dofs;
+                  for (unsigned int c = 0; c < b->n_components; ++c)
+                    dofs.push_back(cell->vertex_dof_index(v, c));
+                  ends.emplace_back(cell->vertex(v), dofs);
+                }
+          if (ends.size() == 2)
+            {
+              const Point<3> first_vertex = b->tria.get_vertices()[0];
+              if (ends[1].first.distance(first_vertex) <
+                  ends[0].first.distance(first_vertex))
+                std::swap(ends[0], ends[1]);
+              b->start_point = ends[0].first;
+              b->start_dofs  = ends[0].second;
+              b->end_point   = ends[1].first;
+              b->end_dofs    = ends[1].second;
+            }
+          double s = 0., best = std::numeric_limits<double>::max();
+          for (const auto &cell : b->dof_handler.active_cell_iterators())
+            {
+              s += cell->diameter();
+              const double gap = std::abs(s - 0.5 * b->reference_length);
+              if (gap < best)
+                {
+                  best = gap;
+                  b->mid_dofs.clear();
+                  for (unsigned int c = 0; c < b->n_components; ++c)
+                    b->mid_dofs.push_back(cell->vertex_dof_index(1, c));
+                }
+            }
+          bodies.push_back(std::move(b));
+        }
+      n_cable_dofs = next - first;
+    }
+
+    IndexSet
+    CableSystem::locally_owned_dofs(const types::global_dof_index size) const
+    {
+      IndexSet owned(size);
+      if (is_owner && n_cable_dofs > 0)
+        owned.add_range(first, first + n_cable_dofs);
+      return owned;
+    }
+
+    void
+    CableSystem::add_support_constraints(
+      AffineConstraints<double> &constraints) const
+    {
+      if (!is_owner)
+        return;
+      for (const auto &b : bodies)
+        {
+          const auto add = [&](const EndSupport                            s,
+                               const std::vector<types::global_dof_index> &dofs) {
+            if (s == EndSupport::free)
+              return;
+            const unsigned int n =
+              (s == EndSupport::fixed) ? b->n_components : 3;
+            for (unsigned int c = 0; c < n; ++c)
+              constraints.add_line(b->offset + dofs[c]);
+          };
+          add(b->definition.start_support, b->start_dofs);
+          add(b->definition.end_support, b->end_dofs);
+        }
+    }
+
+    void
+    CableSystem::set_prescribed_values(const double t, LA::Vector &solution) const
+    {
+      if (is_owner)
+        for (const auto &b : bodies)
+          {
+            const auto set = [&](const EndSupport                            s,
+                                 Functions::ParsedFunction<3>               &f,
+                                 const Point<3>                             &x,
+                                 const std::vector<types::global_dof_index> &dofs) {
+              if (s == EndSupport::free)
+                return;
+              f.set_time(t);
+              for (unsigned int c = 0; c < 3; ++c)
+                solution[b->offset + dofs[c]] = f.value(x, c);
+              if (s == EndSupport::fixed)
+                for (unsigned int c = 3; c < b->n_components; ++c)
+                  solution[b->offset + dofs[c]] = 0.;
+            };
+            set(b->definition.start_support,
+                *b->definition.start_displacement,
+                b->start_point,
+                b->start_dofs);
+            set(b->definition.end_support,
+                *b->definition.end_displacement,
+                b->end_point,
+                b->end_dofs);
+          }
+      solution.compress(VectorOperation::insert);
+    }
+
+    void
+    CableSystem::add_sparsity(DynamicSparsityPattern          &dsp,
+                              const AffineConstraints<double> &constraints) const
+    {
+      if (!is_owner)
+        return;
+      for (const auto &b : bodies)
+        {
+          std::vector<types::global_dof_index> dofs(b->fe->n_dofs_per_cell());
+          for (const auto &cell : b->dof_handler.active_cell_iterators())
+            {
+              cell->get_dof_indices(dofs);
+              for (auto &i : dofs)
+                i += b->offset;
+              constraints.add_entries_local_to_global(dofs, dsp, false);
+            }
+        }
+    }
+
+    Vector<double>
+    CableSystem::extract(const Body &b, const LA::Vector &u) const
+    {
+      Vector<double> local(b.dof_handler.n_dofs());
+      for (unsigned int i = 0; i < local.size(); ++i)
+        local[i] = u[b.offset + i];
+      return local;
+    }
+
+    void
+    CableSystem::cell_terms(const Body                                   &b,
+                            const DoFHandler<1, 3>::active_cell_iterator &cell,
+                            const double                                  t,
+                            const Vector<double>                         &u,
+                            FullMatrix<double>  *cell_matrix,
+                            Vector<double>      *cell_residual,
+                            Vector<double>      *cell_external,
+                            std::vector<double> *cell_output) const
+    {
+      const CableDefinition &d     = b.definition;
+      const FiniteElement<1, 3> &fe = *b.fe;
+      const unsigned int     n     = fe.n_dofs_per_cell();
+      std::vector<types::global_dof_index> dofs(n);
+      cell->get_dof_indices(dofs);
+      Vector<double> local_ref(n), local_u(n);
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          local_ref[i] = b.reference[dofs[i]];
+          local_u[i]   = u[dofs[i]];
+        }
+      const Tensor<1, 3> tangent = cell_tangent(cell);
+
+      // Internal forces.
+      if (b.beam)
+        {
+          FEValues<1, 3> fe_values(mapping(),
+                                   fe,
+                                   QGauss<1>(1),
+                                   update_values | update_gradients |
+                                     update_JxW_values);
+          fe_values.reinit(cell);
+          b.beam->cell_terms(fe_values,
+                             tangent,
+                             local_ref,
+                             local_u,
+                             cell_matrix,
+                             cell_residual,
+                             cell_output);
+        }
+      else
+        {
+          // Constant strain on a linear element: one point is exact.
+          FEValues<1, 3> fe_values(mapping(),
+                                   fe,
+                                   QGauss<1>(1),
+                                   update_gradients | update_JxW_values);
+          fe_values.reinit(cell);
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            {
+              std::vector<double> g(n);
+              Tensor<1, 3>        dx;
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  g[i] = fe_values.shape_grad(i, q) * tangent;
+                  dx[fe.system_to_component_index(i).first] +=
+                    (local_ref[i] + local_u[i]) * g[i];
+                }
+              const CablePoint p  = b.cable->evaluate(dx);
+              const double     JxW = fe_values.JxW(q);
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  const unsigned int ci = fe.system_to_component_index(i).first;
+                  if (cell_residual)
+                    (*cell_residual)(i) += p.force_vector[ci] * g[i] * JxW;
+                  if (cell_matrix)
+                    for (unsigned int j = 0; j < n; ++j)
+                      (*cell_matrix)(i, j) +=
+                        g[i] *
+                        p.tangent[ci][fe.system_to_component_index(j).first] *
+                        g[j] * JxW;
+                }
+              if (cell_output)
+                {
+                  (*cell_output)[0] = p.force;
+                  (*cell_output)[1] = p.stretch;
+                }
+            }
+        }
+
+      // Dead loads per unstressed length: gravity on density * area, and the
+      // distributed load. Mid-line dofs only.
+      const bool gravity = loads.has_gravity() && d.density > 0.;
+      if ((gravity || d.has_distributed_load) &&
+          (cell_residual || cell_external))
+        {
+          FEValues<1, 3> fe_values(mapping(),
+                                   fe,
+                                   QGauss<1>(2),
+                                   update_values | update_quadrature_points |
+                                     update_JxW_values);
+          fe_values.reinit(cell);
+          const Tensor<1, 3> g_vec = loads.gravity(t);
+          d.distributed_load->set_time(t);
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            {
+              Tensor<1, 3> w;
+              if (gravity)
+                w += d.density * d.area() * g_vec;
+              if (d.has_distributed_load)
+                for (unsigned int c = 0; c < 3; ++c)
+                  w[c] += d.distributed_load->value(
+                    fe_values.quadrature_point(q), c);
+              // Per unstressed length -> per reference length.
+              w /= b.rho;
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  const unsigned int ci = fe.system_to_component_index(i).first;
+                  if (ci >= 3)
+                    continue;
+                  const double f = fe_values.shape_value(i, q) * w[ci] *
+                                   fe_values.JxW(q);
+                  if (cell_residual)
+                    (*cell_residual)(i) -= f;
+                  if (cell_external)
+                    (*cell_external)(i) += f;
+                }
+            }
+        }
+    }
+
+    void
+    CableSystem::assemble(const double                     t,
+                          const LA::Vector                &u,
+                          const AffineConstraints<double> &constraints,
+                          LA::SparseMatrix                *tangent,
+                          LA::Vector                      *residual,
+                          LA::Vector                      *external) const
+    {
+      if (is_owner)
+        for (const auto &b : bodies)
+          {
+            const Vector<double> local_u = extract(*b, u);
+            const unsigned int   n       = b->fe->n_dofs_per_cell();
+            FullMatrix<double>   cell_matrix(n, n);
+            Vector<double>       cell_residual(n), cell_external(n);
+            std::vector<types::global_dof_index> dofs(n);
+            for (const auto &cell : b->dof_handler.active_cell_iterators())
+              {
+                cell_matrix   = 0.;
+                cell_residual = 0.;
+                cell_external = 0.;
+                cell_terms(*b,
+                           cell,
+                           t,
+                           local_u,
+                           tangent ? &cell_matrix : nullptr,
+                           &cell_residual,
+                           &cell_external,
+                           nullptr);
+                cell->get_dof_indices(dofs);
+                for (auto &i : dofs)
+                  i += b->offset;
+                if (tangent && residual)
+                  constraints.distribute_local_to_global(
+                    cell_matrix, cell_residual, dofs, *tangent, *residual);
+                else if (tangent)
+                  constraints.distribute_local_to_global(cell_matrix,
+                                                         dofs,
+                                                         *tangent);
+                else if (residual)
+                  constraints.distribute_local_to_global(cell_residual,
+                                                         dofs,
+                                                         *residual);
+                if (external)
+                  constraints.distribute_local_to_global(cell_external,
+                                                         dofs,
+                                                         *external);
+              }
+
+            // Dead end forces and the end moment.
+            const CableDefinition &d = b->definition;
+            if (d.has_end_forces && !b->start_dofs.empty())
+              for (const auto &[f, x, end_dofs] :
+                   {std::make_tuple(d.start_force.get(),
+                                    b->start_point,
+                                    &b->start_dofs),
+                    std::make_tuple(d.end_force.get(),
+                                    b->end_point,
+                                    &b->end_dofs)})
+                {
+                  f->set_time(t);
+                  Vector<double>                       force(3);
+                  std::vector<types::global_dof_index> fdofs(3);
+                  for (unsigned int c = 0; c < 3; ++c)
+                    {
+                      force[c] = f->value(x, c);
+                      fdofs[c] = b->offset + (*end_dofs)[c];
+                    }
+                  if (external)
+                    constraints.distribute_local_to_global(force,
+                                                           fdofs,
+                                                           *external);
+                  force *= -1.;
+                  if (residual)
+                    constraints.distribute_local_to_global(force,
+                                                           fdofs,
+                                                           *residual);
+                }
+            if (d.has_end_moment && !b->end_dofs.empty())
+              {
+                d.end_moment->set_time(t);
+                Tensor<1, 3> M;
+                for (unsigned int c = 0; c < 3; ++c)
+                  M[c] = d.end_moment->value(b->end_point, c);
+                if (M.norm() > 0.)
+                  {
+                    std::array<Tensor<1, 3>, 2> A, a;
+                    for (unsigned int k = 0; k < 2; ++k)
+                      for (unsigned int c = 0; c < 3; ++c)
+                        {
+                          const auto i = b->end_dofs[3 + 3 * k + c];
+                          A[k][c]      = b->reference[i];
+                          a[k][c]      = A[k][c] + local_u[i];
+                        }
+                    FullMatrix<double> node_matrix(9, 9);
+                    Vector<double>     node_residual(9), node_external(9);
+                    SolidBeamElement::end_moment_terms(M,
+                                                       A,
+                                                       a,
+                                                       b->moment_axes,
+                                                       b->moment_angles,
+                                                       &node_matrix,
+                                                       &node_residual,
+                                                       nullptr);
+                    std::vector<types::global_dof_index> mdofs(9);
+                    for (unsigned int c = 0; c < 9; ++c)
+                      mdofs[c] = b->offset + b->end_dofs[c];
+                    if (tangent && residual)
+                      constraints.distribute_local_to_global(
+                        node_matrix, node_residual, mdofs, *tangent, *residual);
+                    else if (residual)
+                      constraints.distribute_local_to_global(node_residual,
+                                                             mdofs,
+                                                             *residual);
+                    if (external)
+                      {
+                        node_external = node_residual;
+                        node_external *= -1.;
+                        constraints.distribute_local_to_global(node_external,
+                                                               mdofs,
+                                                               *external);
+                      }
+                  }
+              }
+          }
+      if (residual)
+        residual->compress(VectorOperation::add);
+      if (external)
+        external->compress(VectorOperation::add);
+      if (tangent)
+        tangent->compress(VectorOperation::add);
+    }
+
+    void
+    CableSystem::assemble_regularisation(
+      const AffineConstraints<double> &constraints,
+      LA::SparseMatrix                &matrix) const
+    {
+      if (is_owner)
+        for (const auto &b : bodies)
+          {
+            const FiniteElement<1, 3> &fe = *b->fe;
+            const unsigned int         n  = fe.n_dofs_per_cell();
+            FEValues<1, 3>             fe_values(mapping(),
+                                     fe,
+                                     QGauss<1>(1),
+                                     update_gradients | update_JxW_values);
+            FullMatrix<double>         cell_matrix(n, n);
+            std::vector<types::global_dof_index> dofs(n);
+            for (const auto &cell : b->dof_handler.active_cell_iterators())
+              {
+                fe_values.reinit(cell);
+                cell_matrix = 0.;
+                for (const unsigned int q : fe_values.quadrature_point_indices())
+                  for (unsigned int i = 0; i < n; ++i)
+                    for (unsigned int j = 0; j < n; ++j)
+                      if (fe.system_to_component_index(i).first ==
+                          fe.system_to_component_index(j).first)
+                        cell_matrix(i, j) += fe_values.shape_grad(i, q) *
+                                             fe_values.shape_grad(j, q) *
+                                             fe_values.JxW(q);
+                cell->get_dof_indices(dofs);
+                for (auto &i : dofs)
+                  i += b->offset;
+                constraints.distribute_local_to_global(cell_matrix, dofs, matrix);
+              }
+          }
+      matrix.compress(VectorOperation::add);
+    }
+
+    int
+    CableSystem::translation_component(const types::global_dof_index i) const
+    {
+      for (const auto &b : bodies)
+        if (i >= b->offset && i < b->offset + b->dof_handler.n_dofs())
+          {
+            // FE_Q(1)^n on lines: the dofs of a vertex are its components.
+            const unsigned int c = (i - b->offset) % b->n_components;
+            return c < 3 ? int(c) : -1;
+          }
+      return -1;
+    }
+
+    void
+    CableSystem::commit_step(const LA::Vector &u)
+    {
+      if (!is_owner)
+        return;
+      for (auto &b : bodies)
+        if (b->definition.has_end_moment && !b->end_dofs.empty())
+          {
+            const Vector<double>        local_u = extract(*b, u);
+            std::array<Tensor<1, 3>, 2> A, a;
+            for (unsigned int k = 0; k < 2; ++k)
+              for (unsigned int c = 0; c < 3; ++c)
+                {
+                  const auto i = b->end_dofs[3 + 3 * k + c];
+                  A[k][c]      = b->reference[i];
+                  a[k][c]      = A[k][c] + local_u[i];
+                }
+            Tensor<1, 3> M;
+            for (unsigned int c = 0; c < 3; ++c)
+              M[c] = b->definition.end_moment->value(b->end_point, c);
+            if (M.norm() == 0.)
+              continue;
+            std::array<double, 2> theta{{0., 0.}};
+            SolidBeamElement::end_moment_terms(M,
+                                               A,
+                                               a,
+                                               b->moment_axes,
+                                               b->moment_angles,
+                                               nullptr,
+                                               nullptr,
+                                               &theta);
+            b->moment_axes   = a;
+            b->moment_angles = theta;
+            b->section_rotation =
+              SolidBeamElement::section_rotation(M, A, theta);
+          }
+    }
+
+    std::vector<CableReport>
+    CableSystem::reports(const double t, const LA::Vector &u) const
+    {
+      std::vector<CableReport> result;
+      if (!is_owner)
+        return result;
+      for (const auto &b : bodies)
+        {
+          CableReport          r;
+          const Vector<double> local_u = extract(*b, u);
+          const unsigned int   n       = b->fe->n_dofs_per_cell();
+          Vector<double>       nodal(b->dof_handler.n_dofs());
+          Vector<double>       cell_residual(n);
+          std::vector<double>  out(b->beam ? 6 : 2, 0.);
+          std::vector<types::global_dof_index> dofs(n);
+          r.max_force = -std::numeric_limits<double>::max();
+          r.min_force = std::numeric_limits<double>::max();
+          for (const auto &cell : b->dof_handler.active_cell_iterators())
+            {
+              cell_residual = 0.;
+              cell_terms(
+                *b, cell, t, local_u, nullptr, &cell_residual, nullptr, &out);
+              cell->get_dof_indices(dofs);
+              for (unsigned int i = 0; i < n; ++i)
+                nodal[dofs[i]] += cell_residual[i];
+              r.max_force = std::max(r.max_force, out[0]);
+              r.min_force = std::min(r.min_force, out[0]);
+              if (b->beam)
+                {
+                  r.max_bending = std::max(r.max_bending,
+                                           std::hypot(out[1], out[2]));
+                  r.max_torsion = std::max(r.max_torsion, std::abs(out[3]));
+                }
+              Tensor<1, 3> chord;
+              for (unsigned int c = 0; c < 3; ++c)
+                chord[c] = cell->vertex(1)[c] - cell->vertex(0)[c] +
+                           local_u[cell->vertex_dof_index(1, c)] -
+                           local_u[cell->vertex_dof_index(0, c)];
+              r.length += chord.norm();
+            }
+          // Dead end forces belong to the applied loads, not the reaction.
+          const CableDefinition &d = b->definition;
+          for (unsigned int c = 0; c < 3; ++c)
+            {
+              if (!b->start_dofs.empty())
+                {
+                  r.start_reaction[c] = nodal[b->start_dofs[c]];
+                  r.end_reaction[c]   = nodal[b->end_dofs[c]];
+                  r.start_displacement[c] = local_u[b->start_dofs[c]];
+                  r.end_displacement[c]   = local_u[b->end_dofs[c]];
+                  if (d.has_end_forces)
+                    {
+                      r.start_reaction[c] -= d.start_force->value(b->start_point, c);
+                      r.end_reaction[c] -= d.end_force->value(b->end_point, c);
+                    }
+                }
+              r.mid_displacement[c] = local_u[b->mid_dofs[c]];
+            }
+          r.end_rotation = b->section_rotation;
+          result.push_back(r);
+        }
+      return result;
+    }
+
+    void
+    CableSystem::write_output(const std::string &directory,
+                              const unsigned int step,
+                              const double       t,
+                              const LA::Vector  &u)
+    {
+      if (!is_owner)
+        return;
+      for (unsigned int k = 0; k < bodies.size(); ++k)
+        {
+          const Body          &b       = *bodies[k];
+          const Vector<double> local_u = extract(b, u);
+          // Displacement of the mid-line, and the section changes.
+          std::vector<std::string> names(3, "displacement");
+          std::vector<DataComponentInterpretation::DataComponentInterpretation>
+            interpretation(
+              3, DataComponentInterpretation::component_is_part_of_vector);
+          for (unsigned int c = 3; c < b.n_components; ++c)
+            {
+              names.push_back(c < 6 ? "section_axis_1_change" :
+                                      "section_axis_2_change");
+              interpretation.push_back(
+                DataComponentInterpretation::component_is_part_of_vector);
+            }
+          const std::vector<std::string> field_names =
+            b.beam ? SolidBeamElement::output_names() :
+                     std::vector<std::string>{"axial_force", "stretch"};
+          std::vector<Vector<double>> fields(
+            field_names.size(), Vector<double>(b.tria.n_active_cells()));
+          std::vector<double> out(field_names.size(), 0.);
+          unsigned int        index = 0;
+          for (const auto &cell : b.dof_handler.active_cell_iterators())
+            {
+              cell_terms(b, cell, t, local_u, nullptr, nullptr, nullptr, &out);
+              for (unsigned int f = 0; f < fields.size(); ++f)
+                fields[f][index] = out[f];
+              ++index;
+            }
+          DataOut<1, 3> data_out;
+          data_out.attach_dof_handler(b.dof_handler);
+          data_out.add_data_vector(local_u,
+                                   names,
+                                   DataOut<1, 3>::type_dof_data,
+                                   interpretation);
+          for (unsigned int f = 0; f < fields.size(); ++f)
+            data_out.add_data_vector(fields[f],
+                                     field_names[f],
+                                     DataOut<1, 3>::type_cell_data);
+          data_out.build_patches();
+          const std::string name = "cables_" + std::to_string(k + 1) + "_" +
+                                   Utilities::int_to_string(step, 4) + ".vtu";
+          std::ofstream file(directory + "/" + name);
+          data_out.write_vtu(file);
+          pvd_records.emplace_back(t, name);
+        }
+      // cables.pvd: one dataset per cable ("part") and time.
+      std::ofstream pvd(directory + "/cables.pvd");
+      pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
+             "version=\"0.1\">\n<Collection>\n";
+      for (unsigned int r = 0; r < pvd_records.size(); ++r)
+        pvd << "  <DataSet timestep=\"" << pvd_records[r].first
+            << "\" part=\"" << r % bodies.size() << "\" file=\""
+            << pvd_records[r].second << "\"/>\n";
+      pvd << "</Collection>\n</VTKFile>\n";
+    }
+  } // namespace cables
+} // namespace pneuma
