@@ -34,6 +34,14 @@ namespace pneuma
                         "6",
                         Patterns::Integer(0, 30),
                         "Halvings of the step length at most.");
+      prm.declare_entry("Watchdog steps",
+                        "3",
+                        Patterns::Integer(0, 20),
+                        "A full Newton step that raises |r| is still taken, "
+                        "and the iteration goes on for up to this many "
+                        "steps; if |r| has not dropped below its value "
+                        "before, that state is restored and the line "
+                        "search backtracks from it (0: backtrack at once).");
       prm.declare_entry("Regularisation factor",
                         "1e-2",
                         Patterns::Double(0.),
@@ -57,6 +65,7 @@ namespace pneuma
       update_tolerance   = prm.get_double("Update tolerance");
       line_search        = prm.get_bool("Line search");
       max_line_search    = prm.get_integer("Maximum line search steps");
+      watchdog_steps     = prm.get_integer("Watchdog steps");
       shift_factor       = prm.get_double("Regularisation factor");
       print_table        = prm.get_bool("Print convergence table");
       prm.leave_subsection();
@@ -86,6 +95,19 @@ namespace pneuma
           }
         return r.l2_norm();
       };
+      // Watchdog (non-monotone acceptance, after Chamberlain et al.): a
+      // full step that raises |r| is taken anyway from a saved state; if
+      // |r| has not dropped below the saved value within `watchdog_steps`
+      // further iterations, the saved state is restored and the line
+      // search backtracks from it. A linearised rotation stretches the
+      // section of a solid beam by the square of the angle, and its stiff
+      // section modes then raise |r| by orders of magnitude although the
+      // step is good: the next iteration restores the section.
+      BorderedVector saved_u(u);
+      double         saved_norm   = 0.;
+      unsigned int   watch_left   = 0; // > 0: a watch is on
+      bool           watch_barred = false;
+
       double r_norm = evaluate(u, residual);
       for (unsigned int it = 0;; ++it)
         {
@@ -130,26 +152,34 @@ namespace pneuma
           double     alpha      = 1.;
           double     trial_norm = 0.;
           bool       accepted   = false;
+          bool       watched    = false;
           for (unsigned int ls = 0; ls <= (line_search ? max_line_search : 0);
                ++ls, alpha *= 0.5)
             {
               u_trial = u;
               u_trial.add(alpha, step);
               trial_norm = evaluate(u_trial, trial);
-              // A full step is also accepted when the directional
-              // derivative of the energy along it has dropped by half
-              // (energy line search): stiff section or axial modes may
-              // raise |r| on the way to convergence (solid beams).
-              const bool energy_drop =
-                alpha == 1. && std::isfinite(trial_norm) &&
-                trial_norm <= 1e3 * r_norm &&
-                std::abs(step * trial) <= 0.5 * std::abs(step * residual);
               if (!line_search
                   || (std::isfinite(trial_norm)
                       && (trial_norm <= (1. - 1e-4 * alpha) * r_norm
-                          || trial_norm <= tolerance * r_ref || energy_drop)))
+                          || trial_norm <= tolerance * r_ref)))
                 {
                   accepted = true;
+                  break;
+                }
+              // A full step that raises |r|: start a watch, or go on with
+              // the one that is on.
+              if (ls == 0 && line_search && watchdog_steps > 0 && !watch_barred
+                  && std::isfinite(trial_norm))
+                {
+                  if (watch_left == 0)
+                    {
+                      saved_u    = u;
+                      saved_norm = r_norm;
+                      watch_left = watchdog_steps + 1;
+                    }
+                  accepted = true;
+                  watched  = true;
                   break;
                 }
             }
@@ -159,7 +189,8 @@ namespace pneuma
                 << trial_norm / r_ref << "  "
                 << alpha * du_norm / std::max(u_trial.l2_norm(), 1e-300) << "  "
                 << shift << "  " << std::defaultfloat << std::setprecision(3)
-                << (accepted ? alpha : 0.) << std::endl;
+                << (accepted ? alpha : 0.) << (watched ? " (watchdog)" : "")
+                << std::endl;
           if (!accepted)
             {
               result.failure_reason = "line search failed";
@@ -168,6 +199,25 @@ namespace pneuma
           u        = u_trial;
           residual = trial;
           r_norm   = trial_norm;
+          if (watch_left > 0)
+            {
+              if (r_norm <= (1. - 1e-4) * saved_norm)
+                watch_left = 0; // progress: the watch ends
+              else if (--watch_left == 0)
+                {
+                  // No progress: back to the saved state; backtrack there.
+                  u            = saved_u;
+                  r_norm       = evaluate(u, residual);
+                  watch_barred = true;
+                  if (print_table)
+                    out << "    (watchdog: back to |r|/|r_ref| = "
+                        << std::scientific << std::setprecision(3)
+                        << r_norm / r_ref << std::defaultfloat << ")\n";
+                  continue;
+                }
+            }
+          else
+            watch_barred = false;
           if (shift == 0.)
             result.residual_history.push_back(r_norm);
         }

@@ -121,6 +121,7 @@ namespace pneuma
       double       update_tolerance   = 1e-8;
       double       shift_factor       = 1e-2;
       unsigned int max_line_search    = 6;
+      unsigned int watchdog_steps     = 3;
       bool         line_search        = true;
       bool         print_table        = true;
     };
