@@ -4,7 +4,10 @@
 // polyline with an end moment, a prestressed helix) against central finite differences of the
 // residual at a perturbed state; and the tension-only law: a cable pushed
 // together carries (almost) nothing and the solve converges, a pulled one
-// carries EA times the engineering strain exactly.
+// carries EA times the engineering strain exactly; a prestress force or an
+// unstressed length gives the expected force (Hooke for the cable, the
+// St. Venant-Kirchhoff uniaxial force EA lambda (lambda^2-1)/2 for the
+// solid beam, whose unstressed length is also set by L/(1 + F/EA)).
 
 #include "test_tools.h"
 
@@ -28,6 +31,11 @@ main(int argc, char **argv)
       {"Cables/Cable 1/Radius", "0.23"},
       {"Cables/Cable 1/Angle to axis", "30"},
       {"Cables/Cable 1/Turns", "1.5"},
+      {"Cables/Cable 1/Prestress force", "1000"}}},
+    {"prestressed ring",
+     {{"Cables/Cable 1/Shape", "ring"},
+      {"Cables/Cable 1/Radius", "0.23"},
+      {"Cables/Cable 1/Start support", "free"},
       {"Cables/Cable 1/Prestress force", "1000"}}},
     {"solid beam, St. Venant-Kirchhoff, end moment",
      {{"Cables/Cable 1/Element", "solid beam"},
@@ -103,6 +111,44 @@ main(int argc, char **argv)
           ok &= pass;
         }
     }
+
+  // Prestress: a straight cable between fixed supports carries the given
+  // force, or EA (L/L0 - 1) for a given unstressed length L0; the solid
+  // beam likewise (nu = 0: no lateral contraction to change the area).
+  for (const std::string element : {"cable", "solid beam"})
+    for (const bool by_length : {false, true})
+      {
+        const double EA = 1e6, L = 2., N0 = 1500.;
+        const double L0 = L / (1. + N0 / EA);
+        pneuma_test::Settings settings = {
+          {"Geometry/Type", "none"},
+          {"Cables/Number of cables", "1"},
+          {"Cables/Cable 1/Element", element},
+          {"Cables/Cable 1/Points", "0, 0, 0; 2, 0, 0"},
+          {"Cables/Cable 1/Number of elements", "4"},
+          {"Cables/Cable 1/Section semi-axes", "0.01"},
+          {"Cables/Cable 1/Poisson's ratio", "0"},
+          {"Cables/Cable 1/Young's modulus", std::to_string(EA / (M_PI * 1e-4))},
+          {"Cables/Cable 1/Start support", "fixed"},
+          {"Cables/Cable 1/End support", "fixed"}};
+        char buffer[64];
+        std::snprintf(buffer, sizeof buffer, "%.15g", by_length ? L0 : N0);
+        settings.push_back({by_length ? "Cables/Cable 1/Unstressed length" :
+                                        "Cables/Cable 1/Prestress force",
+                            buffer});
+        const auto s = pneuma_test::run(settings);
+        // A solid beam with St. Venant-Kirchhoff: the first Piola force of
+        // uniaxial stretch lambda = 1 + N0/EA is EA lambda (lambda^2-1)/2.
+        const double lambda = 1. + N0 / EA;
+        const double reference =
+          element == "cable" ? N0 : EA * lambda * (lambda * lambda - 1.) / 2.;
+        ok &= pneuma_test::check(element + (by_length ? ", unstressed length" :
+                                                        ", prestress force") +
+                                   ": axial force",
+                                 s.cables.empty() ? NAN : s.cables[0].max_force,
+                                 reference,
+                                 1e-8);
+      }
 
   // Quadratic rate: a solid-beam cantilever under a large tip force
   // (deflection about half the length) and the elastic catenary; order
