@@ -208,6 +208,16 @@ namespace pneuma
                             "free",
                             Patterns::Selection("free|fixed|pinned"),
                             "Last end, as Start support.");
+          prm.declare_entry("Start components",
+                            "xyz",
+                            Patterns::Anything(),
+                            "Position components held by the Start support "
+                            "(any of x, y, z; e.g. xy leaves the end free "
+                            "along z).");
+          prm.declare_entry("End components",
+                            "xyz",
+                            Patterns::Anything(),
+                            "Position components held by the End support.");
           loads::declare_function(prm, "Start displacement", 3, "0; 0; 0");
           loads::declare_function(prm, "End displacement", 3, "0; 0; 0");
           prm.declare_entry("End forces",
@@ -344,6 +354,20 @@ namespace pneuma
 
           d.start_support = parse_support(prm.get("Start support"));
           d.end_support   = parse_support(prm.get("End support"));
+          for (const auto &[name, flags] :
+               {std::make_pair(std::string("Start components"),
+                               &d.start_components),
+                std::make_pair(std::string("End components"),
+                               &d.end_components)})
+            {
+              const std::string text = prm.get(name);
+              check_input(!text.empty() &&
+                            text.find_first_not_of("xyz") == std::string::npos,
+                          path + "/" + name,
+                          "'" + text + "' is not a set of x, y, z");
+              for (unsigned int c = 0; c < 3; ++c)
+                (*flags)[c] = text.find("xyz"[c]) != std::string::npos;
+            }
           if (d.closed())
             check_input(d.start_support == EndSupport::free &&
                           d.end_support == EndSupport::free,

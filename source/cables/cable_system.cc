@@ -77,6 +77,34 @@ namespace pneuma
 
     CableSystem::~CableSystem() = default;
 
+    CableView
+    CableSystem::view(const unsigned int k) const
+    {
+      const Body &b = *bodies[k];
+      CableView   v;
+      v.dof_handler = &b.dof_handler;
+      v.offset      = b.offset;
+      v.reference   = &b.reference;
+      v.radius =
+        std::max(b.definition.section_a, b.definition.section_b);
+      return v;
+    }
+
+    void
+    CableSystem::set_output_field(const unsigned int    k,
+                                  const std::string    &name,
+                                  const Vector<double> &values)
+    {
+      extra_fields.resize(bodies.size());
+      for (auto &f : extra_fields[k])
+        if (f.first == name)
+          {
+            f.second = values;
+            return;
+          }
+      extra_fields[k].emplace_back(name, values);
+    }
+
     double
     CableSystem::axial_stiffness() const
     {
@@ -236,16 +264,22 @@ namespace pneuma
       for (const auto &b : bodies)
         {
           const auto add = [&](const EndSupport                            s,
+                               const std::array<bool, 3>                  &held,
                                const std::vector<types::global_dof_index> &dofs) {
             if (s == EndSupport::free)
               return;
             const unsigned int n =
               (s == EndSupport::fixed) ? b->n_components : 3;
             for (unsigned int c = 0; c < n; ++c)
-              constraints.add_line(b->offset + dofs[c]);
+              if (c >= 3 || held[c])
+                constraints.add_line(b->offset + dofs[c]);
           };
-          add(b->definition.start_support, b->start_dofs);
-          add(b->definition.end_support, b->end_dofs);
+          add(b->definition.start_support,
+              b->definition.start_components,
+              b->start_dofs);
+          add(b->definition.end_support,
+              b->definition.end_components,
+              b->end_dofs);
         }
     }
 
@@ -256,6 +290,7 @@ namespace pneuma
         for (const auto &b : bodies)
           {
             const auto set = [&](const EndSupport                            s,
+                                 const std::array<bool, 3>                  &held,
                                  Functions::ParsedFunction<3>               &f,
                                  const Point<3>                             &x,
                                  const std::vector<types::global_dof_index> &dofs) {
@@ -263,16 +298,19 @@ namespace pneuma
                 return;
               f.set_time(t);
               for (unsigned int c = 0; c < 3; ++c)
-                solution[b->offset + dofs[c]] = f.value(x, c);
+                if (held[c])
+                  solution[b->offset + dofs[c]] = f.value(x, c);
               if (s == EndSupport::fixed)
                 for (unsigned int c = 3; c < b->n_components; ++c)
                   solution[b->offset + dofs[c]] = 0.;
             };
             set(b->definition.start_support,
+                b->definition.start_components,
                 *b->definition.start_displacement,
                 b->start_point,
                 b->start_dofs);
             set(b->definition.end_support,
+                b->definition.end_components,
                 *b->definition.end_displacement,
                 b->end_point,
                 b->end_dofs);
@@ -705,6 +743,13 @@ namespace pneuma
                       r.start_reaction[c] -= d.start_force->value(b->start_point, c);
                       r.end_reaction[c] -= d.end_force->value(b->end_point, c);
                     }
+                  // Only held components have a reaction.
+                  if (d.start_support == EndSupport::free ||
+                      !d.start_components[c])
+                    r.start_reaction[c] = 0.;
+                  if (d.end_support == EndSupport::free ||
+                      !d.end_components[c])
+                    r.end_reaction[c] = 0.;
                 }
               r.mid_displacement[c] = local_u[b->mid_dofs[c]];
             }
@@ -762,6 +807,11 @@ namespace pneuma
             data_out.add_data_vector(fields[f],
                                      field_names[f],
                                      DataOut<1, 3>::type_cell_data);
+          if (k < extra_fields.size())
+            for (const auto &[name, values] : extra_fields[k])
+              data_out.add_data_vector(values,
+                                       name,
+                                       DataOut<1, 3>::type_cell_data);
           data_out.build_patches();
           const std::string name = "cables_" + std::to_string(k + 1) + "_" +
                                    Utilities::int_to_string(step, 4) + ".vtu";

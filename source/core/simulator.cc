@@ -28,6 +28,7 @@ namespace pneuma
     , chamber_assembler(geometry, chamber_parameters)
     , chamber_system(chamber_parameters, chamber_assembler)
     , cable_system(cable_parameters, loads)
+    , contact_system(contact_parameters, geometry, cable_system)
   {
   }
 
@@ -58,6 +59,7 @@ namespace pneuma
     solvers::LinearSolver::declare_parameters(prm);
     chambers::ChamberParameters::declare_parameters(prm);
     cables::CableParameters::declare_parameters(prm);
+    contact::ContactParameters::declare_parameters(prm);
     OutputParameters::declare_parameters(prm);
   }
 
@@ -78,7 +80,12 @@ namespace pneuma
     s.linear_solver.parse_parameters(prm);
     s.chamber_parameters.parse_parameters(prm);
     s.cable_parameters.parse_parameters(prm);
+    s.contact_parameters.parse_parameters(prm, s.cable_parameters.size());
     s.output.parse_parameters(prm);
+    if (!s.contact_parameters.empty())
+      check_input(s.has_membrane(),
+                  "Contact/Number of pairs",
+                  "contact needs a membrane (Geometry/Type is none)");
     if (!s.has_membrane())
       {
         check_input(!s.cable_parameters.empty(),
@@ -175,30 +182,22 @@ namespace pneuma
         junction_ties.find(*mapping, dof_handler, master_regions, relevant_membrane);
         for (const auto i : junction_ties.masters)
           locally_relevant.add_index(i);
+        // Contact: every rank sees the mid-lines of the paired cables.
+        contact_system.setup(*mapping, dof_handler, comm);
+        locally_relevant.add_indices(contact_system.cable_dofs(n_total));
+        contact_system.update_candidates(nullptr);
       }
     make_constraints();
 
-    DynamicSparsityPattern dsp(locally_relevant);
-    if (has_membrane())
-      DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
-    cable_system.add_sparsity(dsp, constraints);
-    SparsityTools::distribute_sparsity_pattern(dsp,
-                                               locally_owned,
-                                               comm,
-                                               locally_relevant);
-    tangent.reinit(locally_owned, locally_owned, dsp, comm);
     solution.reinit(locally_owned, comm);
     external.reinit(locally_owned, comm);
     ghosted.reinit(locally_owned, locally_relevant, comm);
-
-    laplacian.reinit(locally_owned, locally_owned, dsp, comm);
     if (has_membrane())
       {
         assembler.reinit(*mapping, dof_handler, degree);
         chamber_assembler.reinit(*mapping, dof_handler, degree);
-        assembler.surface_laplacian(constraints, laplacian);
       }
-    cable_system.assemble_regularisation(constraints, laplacian);
+    build_matrices();
 
     // AMG near-null space: the three rigid translations, i.e. one
     // indicator per displacement component over the owned dofs.
@@ -224,6 +223,26 @@ namespace pneuma
       }
     linear_solver.set_constant_modes(modes);
     linear_solver.reset();
+  }
+
+  void
+  Simulator::Impl::build_matrices()
+  {
+    DynamicSparsityPattern dsp(locally_relevant);
+    if (has_membrane())
+      DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+    cable_system.add_sparsity(dsp, constraints);
+    contact_system.add_sparsity(dsp, constraints);
+    SparsityTools::distribute_sparsity_pattern(dsp,
+                                               locally_owned,
+                                               comm,
+                                               locally_relevant);
+    linear_solver.reset();
+    tangent.reinit(locally_owned, locally_owned, dsp, comm);
+    laplacian.reinit(locally_owned, locally_owned, dsp, comm);
+    if (has_membrane())
+      assembler.surface_laplacian(constraints, laplacian);
+    cable_system.assemble_regularisation(constraints, laplacian);
   }
 
   void
@@ -270,6 +289,28 @@ namespace pneuma
     request.residual = &residual.field;
     request.tangent  = &tangent;
     request.external = &external;
+    // The cable block and the contact couple after the membrane (and
+    // chamber) terms.
+    const auto add_cables_and_contact = [&]() {
+      if (!cable_system.empty())
+        {
+          TimerOutput::Scope tc(timer, "cable assembly");
+          cable_system.assemble(current_time,
+                                ghosted,
+                                constraints,
+                                &tangent,
+                                &residual.field,
+                                &external);
+        }
+      if (!contact_system.empty())
+        {
+          TimerOutput::Scope tc(timer, "contact");
+          contact_system.assemble(ghosted,
+                                  constraints,
+                                  &tangent,
+                                  &residual.field);
+        }
+    };
     if (!has_membrane())
       {
         tangent          = 0.;
@@ -280,16 +321,7 @@ namespace pneuma
       assembler.assemble(ghosted, constraints, request);
     if (chamber_parameters.empty())
       {
-        if (!cable_system.empty())
-          {
-            TimerOutput::Scope tc(timer, "cable assembly");
-            cable_system.assemble(current_time,
-                                  ghosted,
-                                  constraints,
-                                  &tangent,
-                                  &residual.field,
-                                  &external);
-          }
+        add_cables_and_contact();
         residual.border.reinit(0);
         return;
       }
@@ -308,12 +340,7 @@ namespace pneuma
     };
     assembler.assemble(ghosted, constraints, request);
     pass.finish();
-    if (!cable_system.empty())
-      {
-        TimerOutput::Scope tc(timer, "cable assembly");
-        cable_system.assemble(
-          current_time, ghosted, constraints, &tangent, &residual.field, &external);
-      }
+    add_cables_and_contact();
     chamber_system.evaluate(u.border, chamber_measures, residual.border);
   }
 
@@ -412,7 +439,18 @@ namespace pneuma
     const double f = external.l2_norm();
     const double c =
       chamber_parameters.empty() ? 0. : chamber_system.force_scale();
-    return std::sqrt(f * f + c * c);
+    // Cables: the largest axial force at the current state (Newton assembles
+    // before it asks), so that a prestress-driven step without external
+    // load has a force scale.
+    double n = 0.;
+    if (!cable_system.empty())
+      {
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
+          for (const auto &r : cable_system.reports(current_time, ghosted))
+            n = std::max({n, std::abs(r.max_force), std::abs(r.min_force)});
+        n = Utilities::MPI::max(n, comm);
+      }
+    return std::sqrt(f * f + c * c + n * n);
   }
 
   std::vector<CableState>
@@ -459,6 +497,23 @@ namespace pneuma
             s.end_displacement[c]   = v[14 + c];
             s.mid_displacement[c]   = v[17 + c];
           }
+      }
+    return states;
+  }
+
+  std::vector<ContactState>
+  Simulator::Impl::contact_states() const
+  {
+    std::vector<ContactState> states;
+    for (const auto &r : contact_system.reports())
+      {
+        ContactState c;
+        c.active_points   = r.active_points;
+        c.points          = r.points;
+        c.total_force     = r.total_force;
+        c.max_penetration = r.max_penetration;
+        c.force           = r.force;
+        states.push_back(c);
       }
     return states;
   }
@@ -552,6 +607,14 @@ namespace pneuma
                                                     solution);
         cable_system.set_prescribed_values(t_new, solution);
         apply_kinematic_constraints();
+        if (!contact_system.empty())
+          {
+            // New contact candidates of the current state; the sparsity
+            // pattern grows if they bring new couplings.
+            ghosted = solution;
+            if (contact_system.update_candidates(&ghosted))
+              build_matrices();
+          }
         pcout << "Step " << step + 1 << "  t = " << t_new
               << "  dt = " << t_new - t_old << std::endl;
         if (with_chambers)
@@ -668,6 +731,7 @@ namespace pneuma
     if (with_chambers)
       summary.chambers = chamber_states();
     summary.cables       = cable_states();
+    summary.contact      = contact_states();
     summary.wall_seconds = wall_clock.wall_time();
     write_summary(summary);
     return summary;

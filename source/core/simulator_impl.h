@@ -13,6 +13,8 @@
 #include <pneuma/cables/cable_parameters.h>
 #include <pneuma/cables/cable_system.h>
 #include <pneuma/chambers/chamber_assembler.h>
+#include <pneuma/contact/contact_parameters.h>
+#include <pneuma/contact/contact_system.h>
 #include <pneuma/chambers/chamber_parameters.h>
 #include <pneuma/chambers/chamber_system.h>
 #include <pneuma/core/linear_algebra.h>
@@ -66,6 +68,10 @@ namespace pneuma
     setup_system();
     void
     make_constraints();
+    /// Sparsity pattern, tangent and regularisation matrix (again when the
+    /// contact couplings grow).
+    void
+    build_matrices();
     /// Set rigid-plate and junction-copy dofs from their masters.
     void
     apply_kinematic_constraints();
@@ -129,7 +135,11 @@ namespace pneuma
     OutputParameters          output;
     chambers::ChamberParameters chamber_parameters;
     cables::CableParameters   cable_parameters;
+    contact::ContactParameters contact_parameters;
     unsigned int              degree = 1;
+    /// Contact pair states of the last assembly.
+    std::vector<ContactState>
+    contact_states() const;
 
     /// False for Geometry/Type = none (a scene of cables only).
     bool
@@ -159,6 +169,8 @@ namespace pneuma
     std::vector<chambers::ChamberMeasures>     chamber_measures;
     /// The cable block (own meshes and DoFHandlers; rank 0 owns its dofs).
     cables::CableSystem                        cable_system;
+    /// Cable-membrane contact (empty: no search at all).
+    contact::ContactSystem                     contact_system;
 
     // State.
     LA::SparseMatrix tangent, laplacian;

@@ -117,6 +117,14 @@ namespace pneuma
                                    "mid_uy",
                                    "mid_uz"})
             *history << ",cable" << k << "_" << name;
+        for (unsigned int k = 1; k <= contact_parameters.all().size(); ++k)
+          for (const char *name : {"active_points",
+                                   "total_force",
+                                   "fx",
+                                   "fy",
+                                   "fz",
+                                   "max_penetration"})
+            *history << ",contact" << k << "_" << name;
         *history << "\n";
       }
   }
@@ -221,6 +229,10 @@ namespace pneuma
                                   &c.mid_displacement})
               *history << ',' << (*v)[0] << ',' << (*v)[1] << ',' << (*v)[2];
           }
+        for (const auto &c : contact_states())
+          *history << ',' << c.active_points << ',' << c.total_force << ','
+                   << c.force[0] << ',' << c.force[1] << ',' << c.force[2]
+                   << ',' << c.max_penetration;
         *history << std::endl;
       }
   }
@@ -233,6 +245,12 @@ namespace pneuma
     // Never write a non-finite state.
     AssertThrow(std::isfinite(solution.l2_norm()),
                 ExcMessage("refusing to write a non-finite solution"));
+    if (!contact_system.empty())
+      for (const auto &pair : contact_parameters.all())
+        cable_system.set_output_field(pair.cable,
+                                      "contact_line_load",
+                                      contact_system.cable_line_load(
+                                        pair.cable));
     if (!cable_system.empty())
       cable_system.write_output(output.directory, step, t, ghosted);
     if (!has_membrane())
@@ -267,6 +285,15 @@ namespace pneuma
                                  DataOut<2, 3>::type_cell_data);
         data_out.add_data_vector(chamber_cells.pressure,
                                  "chamber_pressure",
+                                 DataOut<2, 3>::type_cell_data);
+      }
+    Vector<float> contact_pressure;
+    if (!contact_system.empty())
+      {
+        contact_pressure =
+          contact_system.membrane_pressure(triangulation.n_active_cells());
+        data_out.add_data_vector(contact_pressure,
+                                 "contact_pressure",
                                  DataOut<2, 3>::type_cell_data);
       }
     Vector<float> subdomain(triangulation.n_active_cells());
@@ -407,6 +434,20 @@ namespace pneuma
         json << "}";
       }
     json << (summary.cables.empty() ? "" : "\n  ") << "],\n"
+         << "  \"contact\": [";
+    for (unsigned int k = 0; k < summary.contact.size(); ++k)
+      {
+        const auto &c = summary.contact[k];
+        json << (k ? ",\n" : "\n") << "    {\"pair\": " << k + 1
+             << ", \"active_points\": " << c.active_points
+             << ", \"points\": " << c.points
+             << ", \"total_force\": " << c.total_force
+             << ", \"max_penetration\": " << c.max_penetration
+             << ", \"force\": ";
+        triple(c.force);
+        json << "}";
+      }
+    json << (summary.contact.empty() ? "" : "\n  ") << "],\n"
          << "  \"monitor_points\": [";
     for (unsigned int m = 0; m < summary.monitor_displacements.size(); ++m)
       {
@@ -460,6 +501,15 @@ namespace pneuma
                 << c.start_reaction[1] << " " << c.start_reaction[2]
                 << " mid_u = " << c.mid_displacement[0] << " "
                 << c.mid_displacement[1] << " " << c.mid_displacement[2]
+                << "\n";
+          }
+        for (unsigned int k = 0; k < summary.contact.size(); ++k)
+          {
+            const auto &c = summary.contact[k];
+            out << "contact " << k + 1 << " active " << c.active_points << "/"
+                << c.points << " total_force = " << c.total_force
+                << " force = " << c.force[0] << " " << c.force[1] << " "
+                << c.force[2] << " max_penetration = " << c.max_penetration
                 << "\n";
           }
       }

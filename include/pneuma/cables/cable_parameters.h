@@ -11,6 +11,7 @@
 #include <deal.II/base/parsed_function.h>
 #include <deal.II/base/point.h>
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -89,6 +90,9 @@ namespace pneuma
       // Supports and loads.
       EndSupport start_support = EndSupport::free,
                  end_support   = EndSupport::free;
+      /// Position components held at a supported end (x, y, z).
+      std::array<bool, 3> start_components{{true, true, true}},
+        end_components{{true, true, true}};
       std::unique_ptr<Functions::ParsedFunction<3>> start_displacement,
         end_displacement, start_force, end_force, distributed_load;
       bool has_end_forces = false, has_distributed_load = false;

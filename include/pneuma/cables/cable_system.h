@@ -62,6 +62,18 @@ namespace pneuma
       double end_rotation = 0.;
     };
 
+    /// What the contact needs to know of one cable.
+    struct CableView
+    {
+      const DoFHandler<1, 3> *dof_handler = nullptr;
+      /// Global index of the cable's local dof 0.
+      types::global_dof_index offset = 0;
+      /// Reference value of every local dof (positions in components 0-2).
+      const Vector<double> *reference = nullptr;
+      /// Larger semi-axis of the section [m].
+      double radius = 0.;
+    };
+
     /// The cable block of the global system.
     class CableSystem
     {
@@ -84,6 +96,17 @@ namespace pneuma
       {
         return n_cable_dofs;
       }
+      /// Mesh, dofs and reference of cable @p k.
+      CableView
+      view(const unsigned int k) const;
+
+      /// Extra cell fields of cable @p k for the next write_output() (e.g.
+      /// the contact line load), by name.
+      void
+      set_output_field(const unsigned int    k,
+                       const std::string    &name,
+                       const Vector<double> &values);
+
       /// Largest axial stiffness EA of the cables [N].
       double
       axial_stiffness() const;
@@ -173,6 +196,8 @@ namespace pneuma
       std::vector<std::unique_ptr<Body>>    bodies;
       types::global_dof_index               first = 0, n_cable_dofs = 0;
       std::vector<std::pair<double, std::string>> pvd_records;
+      std::vector<std::vector<std::pair<std::string, Vector<double>>>>
+        extra_fields;
     };
   } // namespace cables
 } // namespace pneuma

@@ -54,6 +54,16 @@ namespace pneuma
       end_displacement{{0., 0., 0.}}, mid_displacement{{0., 0., 0.}};
   };
 
+  /// State of one contact pair (doc/user-guide.md "Contact").
+  struct ContactState
+  {
+    unsigned int active_points = 0, points = 0;
+    /// Integral of the contact line load [N], resultant force on the
+    /// cable [N], largest penetration [m].
+    double                total_force = 0., max_penetration = 0.;
+    std::array<double, 3> force{{0., 0., 0.}};
+  };
+
   /// What a finished run reports (also written to summary.json).
   struct RunSummary
   {
@@ -78,6 +88,8 @@ namespace pneuma
     std::vector<std::pair<double, std::vector<ChamberState>>> chamber_history;
     /// Cable states at the end (empty without cables).
     std::vector<CableState> cables;
+    /// Contact pair states at the end (empty without contact).
+    std::vector<ContactState> contact;
     /// Newton iterations of every converged step.
     std::vector<unsigned int> step_iterations;
   };

@@ -1,0 +1,73 @@
+#pragma once
+
+/**
+ * @file
+ * The "Contact" subsection: curve-to-surface contact pairs between a cable
+ * mid-line (slave) and membrane regions (master), doc/user-guide.md
+ * "Contact". A scene without pairs does no contact search at all.
+ */
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/types.h>
+
+#include <set>
+#include <string>
+#include <vector>
+
+namespace pneuma
+{
+  namespace contact
+  {
+    using namespace dealii;
+
+    /// Largest number of contact pairs a parameter file can declare.
+    constexpr unsigned int max_pairs = 16;
+
+    /// One contact pair as given in the input.
+    struct ContactPair
+    {
+      /// "Contact/Pair k", for messages.
+      std::string path;
+      /// Cable index (0-based) and the membrane regions of the master.
+      unsigned int                 cable = 0;
+      std::set<types::material_id> regions;
+      /// True: the cable is on the side the outward normal points to.
+      bool outside = true;
+      /// Cable radius R in the gap [m] (0: the cable's larger semi-axis).
+      double radius = 0.;
+      /// Penalty eps_N [N/m^2]: line load per penetration.
+      double penalty = 1e6;
+      /// Integration along each cable element.
+      bool         lobatto          = false;
+      unsigned int points_per_element = 2;
+      /// Extra distance for the candidate search [m] (0: 2 R + one cable
+      /// element length).
+      double search_distance = 0.;
+    };
+
+    /// The "Contact" subsection.
+    class ContactParameters
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm);
+      /// @p n_cables: cables declared, to check the pair's cable.
+      void
+      parse_parameters(ParameterHandler &prm, const unsigned int n_cables);
+
+      bool
+      empty() const
+      {
+        return pairs.empty();
+      }
+      const std::vector<ContactPair> &
+      all() const
+      {
+        return pairs;
+      }
+
+    private:
+      std::vector<ContactPair> pairs;
+    };
+  } // namespace contact
+} // namespace pneuma

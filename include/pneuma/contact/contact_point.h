@@ -1,0 +1,90 @@
+#pragma once
+
+/**
+ * @file
+ * One contact point of the curve-to-surface penalty contact (source paper
+ * section 3.2, equations 7-9; doc/theory.md §10).
+ *
+ * The slave is a point of the cable mid-line, x_s = (1 - eta) x_0 + eta x_1
+ * on a linear cable element; the master is a membrane cell in its current
+ * configuration, the tensor-product Lagrange patch
+ * \f$\rho(\xi) = \sum_{ij} l_i(\xi^1) l_j(\xi^2)\, y_{ij}\f$ of degree 1 or
+ * 2 through the current positions y of the cell's support points. The
+ * closest point \f$\xi^*\f$ minimises \f$|x_s - \rho(\xi)|\f$ (Newton on the
+ * two convective coordinates); with the unit normal
+ * \f$n = \sigma\,\rho_{,1}\times\rho_{,2}/|\rho_{,1}\times\rho_{,2}|\f$
+ * (sigma = +-1 turns it towards the contact side) the gap is
+ * \f[ \xi^3 = (x_s - \rho(\xi^*))\cdot n - R , \f]
+ * and for \f$\xi^3 < 0\f$ the penalty potential per point is
+ * \f$\Pi = w\,\tfrac{\varepsilon_N}{2}(\xi^3)^2\f$ (w: the integration
+ * weight, a length), so that the contact line load is
+ * \f$N = \varepsilon_N \xi^3\f$ (paper eq. 9). Its gradient and Hessian with
+ * respect to the slave and master node positions are exact: the energy is
+ * evaluated with nested forward automatic differentiation (Trilinos
+ * Sacado) after two Newton steps of the projection taken in the
+ * differentiated numbers from the converged \f$\xi^*\f$, which gives the
+ * derivatives of the projection point (implicit function theorem) and with
+ * them the variation of the normal and of the projection point.
+ */
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <array>
+#include <vector>
+
+namespace pneuma
+{
+  namespace contact
+  {
+    using namespace dealii;
+
+    /// The current master patch: degree and node positions in lattice
+    /// order a = i + (degree + 1) j (node (i, j) at xi = (i, j)/degree).
+    struct MasterPatch
+    {
+      unsigned int              degree = 1;
+      std::vector<Tensor<1, 3>> nodes;
+      /// +1 or -1: turns rho_1 x rho_2 towards the contact side.
+      double sign = 1.;
+    };
+
+    /// Result of a closest-point projection.
+    struct Projection
+    {
+      /// True if the iteration converged with xi inside the cell (within
+      /// a small tolerance).
+      bool      inside = false;
+      Point<2>  xi;
+      /// |x_s - rho(xi)|, and the gap (x_s - rho).n - R.
+      double       distance = 0., gap = 0.;
+      Tensor<1, 3> normal;
+    };
+
+    /// Closest point of @p x on @p patch, starting from @p xi_start.
+    Projection
+    project(const MasterPatch  &patch,
+            const Tensor<1, 3> &x,
+            const double        radius,
+            const Point<2>     &xi_start = Point<2>(0.5, 0.5));
+
+    /**
+     * Penalty energy of one point and, if requested, its gradient and
+     * Hessian. Variables: slave node 0 (xyz), slave node 1 (xyz), then the
+     * master nodes (xyz each, lattice order). @p xi is the converged
+     * projection.
+     */
+    double
+    penalty_terms(const MasterPatch                 &patch,
+                  const std::array<Tensor<1, 3>, 2> &slave,
+                  const double                       eta,
+                  const double                       radius,
+                  const double                       penalty,
+                  const double                       weight,
+                  const Point<2>                    &xi,
+                  Vector<double>                    *gradient,
+                  FullMatrix<double>                *hessian);
+  } // namespace contact
+} // namespace pneuma

@@ -1,0 +1,167 @@
+#pragma once
+
+/**
+ * @file
+ * Curve-to-surface penalty contact between cable mid-lines and the
+ * membrane (source paper section 3.2; doc/theory.md §10).
+ *
+ * Search: every rank holds the cables and its own membrane cells. Cells of
+ * the pair's regions whose current bounding box comes within R + the
+ * search distance of a cable element's box are its candidates; the
+ * candidates are renewed at the start of every load step (the sparsity
+ * pattern grows when new couplings appear), so Newton never meets a
+ * coupling outside the matrix. Each integration point of a cable element
+ * is projected onto its candidates (closest point, ContactPoint); the
+ * nearest projection inside a cell wins, over all ranks (one MPI min
+ * reduction per assembly), which makes the answer unique at cell edges and
+ * partition boundaries. The rank owning the winning cell assembles the
+ * point's penalty force and exact tangent.
+ */
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <pneuma/cables/cable_system.h>
+#include <pneuma/contact/contact_parameters.h>
+#include <pneuma/contact/contact_point.h>
+#include <pneuma/core/linear_algebra.h>
+#include <pneuma/geometry/scene_generator.h>
+
+#include <array>
+#include <set>
+#include <vector>
+
+namespace pneuma
+{
+  namespace contact
+  {
+    /// What a contact pair reports after an assembly.
+    struct ContactReport
+    {
+      unsigned int active_points = 0, points = 0;
+      /// Integral of the contact line load N along the cable [N], and the
+      /// resultant force on the cable [N].
+      double                total_force = 0.;
+      std::array<double, 3> force{{0., 0., 0.}};
+      /// Largest penetration -xi3 [m] (0 if none).
+      double max_penetration = 0.;
+    };
+
+    /// The contact pairs of a scene.
+    class ContactSystem
+    {
+    public:
+      ContactSystem(const ContactParameters        &parameters,
+                    const geometry::SceneGenerator &geometry,
+                    const cables::CableSystem      &cables);
+
+      bool
+      empty() const
+      {
+        return parameters.empty();
+      }
+
+      /// Master cells (owned, in the pairs' regions) and cable points.
+      void
+      setup(const Mapping<2, 3>    &mapping,
+            const DoFHandler<2, 3> &dof_handler,
+            const MPI_Comm          comm);
+
+      /// The cable dofs every rank must see (mid-lines of paired cables).
+      IndexSet
+      cable_dofs(const types::global_dof_index size) const;
+
+      /**
+       * Renew the candidates at @p u (ghosted; nullptr: the reference
+       * configuration). Returns true on every rank if couplings outside
+       * the current sparsity pattern appeared (the caller rebuilds it).
+       */
+      bool
+      update_candidates(const LA::Vector *u);
+
+      /// Couplings of all candidates seen so far.
+      void
+      add_sparsity(DynamicSparsityPattern          &dsp,
+                   const AffineConstraints<double> &constraints) const;
+
+      /// Add the penalty forces (to r = f_int - f_ext) and their tangent at
+      /// @p u (ghosted); compresses what it touched. Keeps the point data
+      /// for reports() and the output fields.
+      void
+      assemble(const LA::Vector                &u,
+               const AffineConstraints<double> &constraints,
+               LA::SparseMatrix                *tangent,
+               LA::Vector                      *residual);
+
+      /// Reports of the last assembly, one per pair (same on every rank).
+      const std::vector<ContactReport> &
+      reports() const
+      {
+        return last_reports;
+      }
+
+      /// Contact line load (N, positive in compression) averaged over each
+      /// element of cable @p k in the last assembly (every rank).
+      Vector<double>
+      cable_line_load(const unsigned int k) const;
+
+      /// Contact pressure on the owned membrane cells (force over area) of
+      /// the last assembly, indexed by active cell index.
+      Vector<float>
+      membrane_pressure(const unsigned int n_active_cells) const;
+
+    private:
+      struct MasterCell
+      {
+        DoFHandler<2, 3>::active_cell_iterator cell;
+        /// Global dofs in lattice order, 3 per node.
+        std::vector<types::global_dof_index> dofs;
+        /// Reference node positions (lattice order).
+        std::vector<Tensor<1, 3>> reference;
+        /// +1 if rho_1 x rho_2 points outward (Geometry/Orientation).
+        double       outward = 1.;
+        double       area    = 0.;
+        types::material_id material = 0;
+      };
+      struct CablePoint
+      {
+        unsigned int cable_cell;
+        double       eta, weight;
+      };
+      struct PairData
+      {
+        double radius = 0., search = 0.;
+        /// Per cable cell: its 6 mid-line dofs.
+        std::vector<std::array<types::global_dof_index, 6>> cell_dofs;
+        /// Per cable cell: reference vertex positions.
+        std::vector<std::array<Tensor<1, 3>, 2>> cell_reference;
+        std::vector<CablePoint>                   points;
+        /// Per cable cell: candidate master cells (indices).
+        std::vector<std::vector<unsigned int>> candidates;
+        /// Per point of the last assembly: line load N (>= 0), or 0.
+        std::vector<double> line_load;
+      };
+
+      MasterPatch
+      patch(const MasterCell &m, const PairData &p, const bool outside,
+            const LA::Vector *u) const;
+
+      const ContactParameters        &parameters;
+      const geometry::SceneGenerator &geometry;
+      const cables::CableSystem      &cables;
+      MPI_Comm                        comm = MPI_COMM_SELF;
+      unsigned int                    degree = 1;
+      std::vector<MasterCell>         masters;
+      std::vector<PairData>           pairs;
+      /// Couplings (pair, cable cell, master) in the sparsity pattern.
+      std::set<std::array<unsigned int, 3>> coupled;
+      std::vector<ContactReport>            last_reports;
+      /// Contact force per master cell of the last assembly.
+      std::vector<double> master_force;
+    };
+  } // namespace contact
+} // namespace pneuma

@@ -1,0 +1,262 @@
+#include <deal.II/base/config.h>
+
+#include <pneuma/contact/contact_point.h>
+
+#ifndef DEAL_II_TRILINOS_WITH_SACADO
+#  error "pneuma's contact needs deal.II with Trilinos Sacado"
+#endif
+
+#include <Sacado.hpp>
+
+#include <cmath>
+
+namespace pneuma
+{
+  namespace contact
+  {
+    namespace
+    {
+      /// 1D Lagrange basis of degree 1 or 2 on the nodes i/degree: values,
+      /// first and second derivatives.
+      template <typename Number>
+      void
+      lagrange(const unsigned int degree,
+               const Number      &t,
+               Number             l[3],
+               Number             dl[3],
+               Number             ddl[3])
+      {
+        if (degree == 1)
+          {
+            l[0]   = 1. - t;
+            l[1]   = t;
+            dl[0]  = -1.;
+            dl[1]  = 1.;
+            ddl[0] = 0.;
+            ddl[1] = 0.;
+            return;
+          }
+        l[0]   = 2. * (t - 0.5) * (t - 1.);
+        l[1]   = -4. * t * (t - 1.);
+        l[2]   = 2. * t * (t - 0.5);
+        dl[0]  = 4. * t - 3.;
+        dl[1]  = -8. * t + 4.;
+        dl[2]  = 4. * t - 1.;
+        ddl[0] = 4.;
+        ddl[1] = -8.;
+        ddl[2] = 4.;
+      }
+
+      /// rho, rho_a, rho_ab at xi for node positions y (Number vectors).
+      template <typename Number>
+      void
+      surface(const unsigned int                        degree,
+              const std::vector<std::array<Number, 3>> &y,
+              const Number                              xi[2],
+              Number                                    rho[3],
+              Number                                    d[2][3],
+              Number                                    dd[2][2][3])
+      {
+        Number l1[3], dl1[3], ddl1[3], l2[3], dl2[3], ddl2[3];
+        lagrange(degree, xi[0], l1, dl1, ddl1);
+        lagrange(degree, xi[1], l2, dl2, ddl2);
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            rho[c] = 0.;
+            for (unsigned int a = 0; a < 2; ++a)
+              {
+                d[a][c] = 0.;
+                for (unsigned int b = 0; b < 2; ++b)
+                  dd[a][b][c] = 0.;
+              }
+          }
+        const unsigned int n = degree + 1;
+        for (unsigned int j = 0; j < n; ++j)
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              const auto &p = y[i + n * j];
+              for (unsigned int c = 0; c < 3; ++c)
+                {
+                  rho[c] += l1[i] * l2[j] * p[c];
+                  d[0][c] += dl1[i] * l2[j] * p[c];
+                  d[1][c] += l1[i] * dl2[j] * p[c];
+                  dd[0][0][c] += ddl1[i] * l2[j] * p[c];
+                  dd[1][1][c] += l1[i] * ddl2[j] * p[c];
+                  dd[0][1][c] += dl1[i] * dl2[j] * p[c];
+                }
+              for (unsigned int c = 0; c < 3; ++c)
+                dd[1][0][c] = dd[0][1][c];
+            }
+      }
+
+      /// One Newton step of min |x - rho(xi)|^2 / 2 on xi.
+      template <typename Number>
+      void
+      newton_step(const unsigned int                        degree,
+                  const std::vector<std::array<Number, 3>> &y,
+                  const Number                              x[3],
+                  Number                                    xi[2])
+      {
+        Number rho[3], d[2][3], dd[2][2][3];
+        surface(degree, y, xi, rho, d, dd);
+        Number r[3];
+        for (unsigned int c = 0; c < 3; ++c)
+          r[c] = x[c] - rho[c];
+        Number g[2], H[2][2];
+        for (unsigned int a = 0; a < 2; ++a)
+          {
+            g[a] = 0.;
+            for (unsigned int c = 0; c < 3; ++c)
+              g[a] -= r[c] * d[a][c];
+            for (unsigned int b = 0; b < 2; ++b)
+              {
+                H[a][b] = 0.;
+                for (unsigned int c = 0; c < 3; ++c)
+                  H[a][b] += d[a][c] * d[b][c] - r[c] * dd[a][b][c];
+              }
+          }
+        const Number det = H[0][0] * H[1][1] - H[0][1] * H[1][0];
+        const Number s0  = (H[1][1] * g[0] - H[0][1] * g[1]) / det;
+        const Number s1  = (H[0][0] * g[1] - H[1][0] * g[0]) / det;
+        xi[0] -= s0;
+        xi[1] -= s1;
+      }
+
+      /// Gap (x - rho(xi)).n - R with n = sign rho_1 x rho_2 / |...|.
+      template <typename Number>
+      Number
+      gap(const unsigned int                        degree,
+          const std::vector<std::array<Number, 3>> &y,
+          const Number                              x[3],
+          const Number                              xi[2],
+          const double                              sign,
+          const double                              radius,
+          Number                                    normal[3])
+      {
+        Number rho[3], d[2][3], dd[2][2][3];
+        surface(degree, y, xi, rho, d, dd);
+        Number m[3] = {d[0][1] * d[1][2] - d[0][2] * d[1][1],
+                       d[0][2] * d[1][0] - d[0][0] * d[1][2],
+                       d[0][0] * d[1][1] - d[0][1] * d[1][0]};
+        using std::sqrt;
+        const Number length = sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+        Number g = -radius;
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            normal[c] = sign * m[c] / length;
+            g += (x[c] - rho[c]) * normal[c];
+          }
+        return g;
+      }
+    } // namespace
+
+    Projection
+    project(const MasterPatch  &patch,
+            const Tensor<1, 3> &x,
+            const double        radius,
+            const Point<2>     &xi_start)
+    {
+      std::vector<std::array<double, 3>> y(patch.nodes.size());
+      for (unsigned int a = 0; a < y.size(); ++a)
+        for (unsigned int c = 0; c < 3; ++c)
+          y[a][c] = patch.nodes[a][c];
+      const double xs[3] = {x[0], x[1], x[2]};
+      double       xi[2] = {xi_start[0], xi_start[1]};
+      Projection   p;
+      bool         converged = false;
+      for (unsigned int k = 0; k < 30; ++k)
+        {
+          const double old[2] = {xi[0], xi[1]};
+          newton_step(patch.degree, y, xs, xi);
+          if (!std::isfinite(xi[0]) || !std::isfinite(xi[1]))
+            return p;
+          // Far outside the cell: no projection here.
+          if (std::abs(xi[0] - 0.5) > 3. || std::abs(xi[1] - 0.5) > 3.)
+            return p;
+          if (std::abs(xi[0] - old[0]) + std::abs(xi[1] - old[1]) < 1e-13)
+            {
+              converged = true;
+              break;
+            }
+        }
+      const double tolerance = 1e-9;
+      p.xi                   = Point<2>(xi[0], xi[1]);
+      p.inside = converged && xi[0] >= -tolerance && xi[0] <= 1. + tolerance &&
+                 xi[1] >= -tolerance && xi[1] <= 1. + tolerance;
+      double normal[3];
+      p.gap = gap(patch.degree, y, xs, xi, patch.sign, radius, normal);
+      double rho[3], d[2][3], dd[2][2][3];
+      surface(patch.degree, y, xi, rho, d, dd);
+      p.distance = std::sqrt((xs[0] - rho[0]) * (xs[0] - rho[0]) +
+                             (xs[1] - rho[1]) * (xs[1] - rho[1]) +
+                             (xs[2] - rho[2]) * (xs[2] - rho[2]));
+      for (unsigned int c = 0; c < 3; ++c)
+        p.normal[c] = normal[c];
+      return p;
+    }
+
+    double
+    penalty_terms(const MasterPatch                 &patch,
+                  const std::array<Tensor<1, 3>, 2> &slave,
+                  const double                       eta,
+                  const double                       radius,
+                  const double                       penalty,
+                  const double                       weight,
+                  const Point<2>                    &xi_converged,
+                  Vector<double>                    *gradient,
+                  FullMatrix<double>                *hessian)
+    {
+      using AD1              = Sacado::Fad::DFad<double>;
+      using AD2              = Sacado::Fad::DFad<AD1>;
+      const unsigned int n_m = patch.nodes.size();
+      const unsigned int n   = 6 + 3 * n_m;
+      // Independent variables: value, first (outer) and inner seeds.
+      const auto variable = [n](const unsigned int k, const double v) {
+        return AD2(n, k, AD1(n, k, v));
+      };
+      AD2 x[3];
+      for (unsigned int c = 0; c < 3; ++c)
+        x[c] = (1. - eta) * variable(c, slave[0][c]) +
+               eta * variable(3 + c, slave[1][c]);
+      std::vector<std::array<AD2, 3>> y(n_m);
+      for (unsigned int a = 0; a < n_m; ++a)
+        for (unsigned int c = 0; c < 3; ++c)
+          y[a][c] = variable(6 + 3 * a + c, patch.nodes[a][c]);
+      // Two Newton steps from the converged point carry the derivatives of
+      // the projection (first and second order).
+      AD2 xi[2] = {AD2(xi_converged[0]), AD2(xi_converged[1])};
+      newton_step(patch.degree, y, x, xi);
+      newton_step(patch.degree, y, x, xi);
+      AD2       normal[3];
+      const AD2 g = gap(patch.degree, y, x, xi, patch.sign, radius, normal);
+      if (g.val().val() >= 0.)
+        {
+          if (gradient)
+            gradient->reinit(n);
+          if (hessian)
+            hessian->reinit(n, n);
+          return 0.;
+        }
+      const AD2 energy = 0.5 * weight * penalty * g * g;
+      if (gradient)
+        {
+          gradient->reinit(n);
+          for (unsigned int i = 0; i < n; ++i)
+            (*gradient)(i) = energy.dx(i).val();
+        }
+      if (hessian)
+        {
+          hessian->reinit(n, n);
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j < n; ++j)
+              (*hessian)(i, j) = energy.dx(i).dx(j);
+          // Symmetric up to round-off; make it exactly so.
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j < i; ++j)
+              (*hessian)(i, j) = (*hessian)(j, i) =
+                0.5 * ((*hessian)(i, j) + (*hessian)(j, i));
+        }
+      return energy.val().val();
+    }
+  } // namespace contact
+} // namespace pneuma

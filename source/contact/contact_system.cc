@@ -1,0 +1,400 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_system.h>
+
+#include <pneuma/contact/contact_system.h>
+
+#include <cmath>
+#include <limits>
+
+namespace pneuma
+{
+  namespace contact
+  {
+    ContactSystem::ContactSystem(const ContactParameters        &parameters,
+                                 const geometry::SceneGenerator &geometry,
+                                 const cables::CableSystem      &cables)
+      : parameters(parameters)
+      , geometry(geometry)
+      , cables(cables)
+    {
+    }
+
+    void
+    ContactSystem::setup(const Mapping<2, 3>    &mapping,
+                         const DoFHandler<2, 3> &dof_handler,
+                         const MPI_Comm          comm_)
+    {
+      comm = comm_;
+      masters.clear();
+      pairs.clear();
+      coupled.clear();
+      if (empty())
+        return;
+      const FiniteElement<2, 3> &fe = dof_handler.get_fe();
+      degree                        = fe.base_element(0).degree;
+      const unsigned int n          = degree + 1;
+
+      // Master cells: owned membrane cells in any pair's regions.
+      std::set<types::material_id> regions;
+      bool                         all_regions = false;
+      for (const auto &p : parameters.all())
+        {
+          all_regions = all_regions || p.regions.empty();
+          regions.insert(p.regions.begin(), p.regions.end());
+        }
+      std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned() &&
+            (all_regions || regions.count(cell->material_id())))
+          {
+            MasterCell m;
+            m.cell     = cell;
+            m.material = cell->material_id();
+            m.dofs.resize(3 * n * n);
+            m.reference.resize(n * n);
+            cell->get_dof_indices(cell_dofs);
+            for (unsigned int k = 0; k < fe.n_dofs_per_cell(); ++k)
+              {
+                const auto [c, base] = fe.system_to_component_index(k);
+                const Point<2> xi = fe.base_element(0).unit_support_point(base);
+                const unsigned int a = std::lround(xi[0] * degree) +
+                                       n * std::lround(xi[1] * degree);
+                m.dofs[3 * a + c] = cell_dofs[k];
+              }
+            for (unsigned int j = 0; j < n; ++j)
+              for (unsigned int i = 0; i < n; ++i)
+                m.reference[i + n * j] = mapping.transform_unit_to_real_cell(
+                  cell, Point<2>(double(i) / degree, double(j) / degree));
+            // Outward sign and area of the patch at its centre.
+            const Point<3> x = mapping.transform_unit_to_real_cell(
+              cell, Point<2>(0.5, 0.5));
+            // rho_1 x rho_2 at the centre from the lattice.
+            Tensor<1, 3> d1, d2;
+            if (degree == 1)
+              {
+                d1 = 0.5 * (m.reference[1] - m.reference[0] + m.reference[3] -
+                            m.reference[2]);
+                d2 = 0.5 * (m.reference[2] - m.reference[0] + m.reference[3] -
+                            m.reference[1]);
+              }
+            else
+              {
+                d1 = m.reference[5] - m.reference[3];
+                d2 = m.reference[7] - m.reference[1];
+              }
+            const Tensor<1, 3> normal = cross_product_3d(d1, d2);
+            m.outward = geometry.orientation(x, normal);
+            m.area    = normal.norm();
+            masters.push_back(m);
+          }
+
+      // Cable points.
+      for (const auto &p : parameters.all())
+        {
+          PairData                     d;
+          const cables::CableView      v = cables.view(p.cable);
+          const QGauss<1>              gauss(p.points_per_element);
+          const QGaussLobatto<1>       lobatto(std::max(2u, p.points_per_element));
+          const Quadrature<1>         &rule = p.lobatto ?
+                                                static_cast<const Quadrature<1> &>(lobatto) :
+                                                gauss;
+          unsigned int index = 0;
+          double       h_max = 0.;
+          for (const auto &cell : v.dof_handler->active_cell_iterators())
+            {
+              std::array<types::global_dof_index, 6> dofs;
+              std::array<Tensor<1, 3>, 2>            X;
+              for (unsigned int vtx = 0; vtx < 2; ++vtx)
+                for (unsigned int c = 0; c < 3; ++c)
+                  {
+                    const auto local = cell->vertex_dof_index(vtx, c);
+                    dofs[3 * vtx + c] = v.offset + local;
+                    X[vtx][c]         = (*v.reference)[local];
+                  }
+              const double length = (X[1] - X[0]).norm();
+              h_max               = std::max(h_max, length);
+              for (unsigned int q = 0; q < rule.size(); ++q)
+                d.points.push_back(
+                  {index, rule.point(q)[0], rule.weight(q) * length});
+              d.cell_dofs.push_back(dofs);
+              d.cell_reference.push_back(X);
+              ++index;
+            }
+          d.radius = p.radius > 0. ? p.radius : v.radius;
+          d.search =
+            p.search_distance > 0. ? p.search_distance : 2. * d.radius + h_max;
+          d.candidates.resize(index);
+          d.line_load.assign(d.points.size(), 0.);
+          pairs.push_back(d);
+        }
+      last_reports.assign(pairs.size(), ContactReport());
+      master_force.assign(masters.size(), 0.);
+    }
+
+    IndexSet
+    ContactSystem::cable_dofs(const types::global_dof_index size) const
+    {
+      IndexSet dofs(size);
+      for (const auto &p : pairs)
+        for (const auto &cell : p.cell_dofs)
+          for (const auto i : cell)
+            dofs.add_index(i);
+      return dofs;
+    }
+
+    MasterPatch
+    ContactSystem::patch(const MasterCell &m,
+                         const PairData   &,
+                         const bool        outside,
+                         const LA::Vector *u) const
+    {
+      MasterPatch patch;
+      patch.degree = degree;
+      patch.nodes  = m.reference;
+      if (u)
+        for (unsigned int a = 0; a < patch.nodes.size(); ++a)
+          for (unsigned int c = 0; c < 3; ++c)
+            patch.nodes[a][c] += (*u)[m.dofs[3 * a + c]];
+      patch.sign = outside ? m.outward : -m.outward;
+      return patch;
+    }
+
+    bool
+    ContactSystem::update_candidates(const LA::Vector *u)
+    {
+      if (empty())
+        return false;
+      bool grown = false;
+      for (unsigned int k = 0; k < pairs.size(); ++k)
+        {
+          PairData          &d = pairs[k];
+          const ContactPair &p = parameters.all()[k];
+          // Current boxes of the master cells of this pair.
+          std::vector<std::pair<Tensor<1, 3>, Tensor<1, 3>>> boxes;
+          std::vector<unsigned int>                          ids;
+          for (unsigned int m = 0; m < masters.size(); ++m)
+            {
+              if (!p.regions.empty() && !p.regions.count(masters[m].material))
+                continue;
+              const MasterPatch patch_m = patch(masters[m], d, p.outside, u);
+              Tensor<1, 3>      lo = patch_m.nodes[0], hi = patch_m.nodes[0];
+              for (const auto &y : patch_m.nodes)
+                for (unsigned int c = 0; c < 3; ++c)
+                  {
+                    lo[c] = std::min(lo[c], y[c]);
+                    hi[c] = std::max(hi[c], y[c]);
+                  }
+              boxes.emplace_back(lo, hi);
+              ids.push_back(m);
+            }
+          const double reach = d.radius + d.search;
+          for (unsigned int c = 0; c < d.cell_dofs.size(); ++c)
+            {
+              std::array<Tensor<1, 3>, 2> x = d.cell_reference[c];
+              if (u)
+                for (unsigned int v = 0; v < 2; ++v)
+                  for (unsigned int i = 0; i < 3; ++i)
+                    x[v][i] += (*u)[d.cell_dofs[c][3 * v + i]];
+              std::vector<unsigned int> found;
+              for (unsigned int b = 0; b < boxes.size(); ++b)
+                {
+                  bool overlap = true;
+                  for (unsigned int i = 0; i < 3 && overlap; ++i)
+                    overlap =
+                      std::min(x[0][i], x[1][i]) - reach <= boxes[b].second[i] &&
+                      std::max(x[0][i], x[1][i]) + reach >= boxes[b].first[i];
+                  if (overlap)
+                    {
+                      found.push_back(ids[b]);
+                      if (coupled.insert(std::array<unsigned int, 3>{{k, c, ids[b]}}).second)
+                        grown = true;
+                    }
+                }
+              d.candidates[c] = found;
+            }
+        }
+      return Utilities::MPI::max(grown ? 1 : 0, comm) > 0;
+    }
+
+    void
+    ContactSystem::add_sparsity(DynamicSparsityPattern          &dsp,
+                                const AffineConstraints<double> &constraints) const
+    {
+      std::vector<types::global_dof_index> dofs;
+      for (const auto &[k, c, m] : coupled)
+        {
+          dofs.assign(pairs[k].cell_dofs[c].begin(), pairs[k].cell_dofs[c].end());
+          dofs.insert(dofs.end(), masters[m].dofs.begin(), masters[m].dofs.end());
+          constraints.add_entries_local_to_global(dofs, dsp, false);
+        }
+    }
+
+    void
+    ContactSystem::assemble(const LA::Vector                &u,
+                            const AffineConstraints<double> &constraints,
+                            LA::SparseMatrix                *tangent,
+                            LA::Vector                      *residual)
+    {
+      std::fill(master_force.begin(), master_force.end(), 0.);
+      const int rank = Utilities::MPI::this_mpi_process(comm);
+      for (unsigned int k = 0; k < pairs.size(); ++k)
+        {
+          PairData          &d = pairs[k];
+          const ContactPair &p = parameters.all()[k];
+          const unsigned int n_points = d.points.size();
+          // Nearest projection inside a candidate cell, per point, here.
+          struct Best
+          {
+            double distance;
+            int    rank;
+          };
+          std::vector<Best>         best(n_points,
+                                 {std::numeric_limits<double>::max(), rank});
+          std::vector<unsigned int> best_master(n_points, 0);
+          std::vector<Point<2>>     best_xi(n_points);
+          std::vector<std::array<Tensor<1, 3>, 2>> slave(d.cell_dofs.size());
+          for (unsigned int c = 0; c < d.cell_dofs.size(); ++c)
+            for (unsigned int v = 0; v < 2; ++v)
+              for (unsigned int i = 0; i < 3; ++i)
+                slave[c][v][i] = d.cell_reference[c][v][i] +
+                                 u[d.cell_dofs[c][3 * v + i]];
+          std::vector<MasterPatch> patches(masters.size());
+          std::vector<bool>        have_patch(masters.size(), false);
+          for (unsigned int q = 0; q < n_points; ++q)
+            {
+              const CablePoint  &pt = d.points[q];
+              const Tensor<1, 3> x  = (1. - pt.eta) * slave[pt.cable_cell][0] +
+                                     pt.eta * slave[pt.cable_cell][1];
+              for (const unsigned int m : d.candidates[pt.cable_cell])
+                {
+                  if (!have_patch[m])
+                    {
+                      patches[m]    = patch(masters[m], d, p.outside, &u);
+                      have_patch[m] = true;
+                    }
+                  const Projection proj = project(patches[m], x, d.radius);
+                  if (proj.inside && proj.distance < best[q].distance)
+                    {
+                      best[q].distance = proj.distance;
+                      best_master[q]   = m;
+                      best_xi[q]       = proj.xi;
+                    }
+                }
+            }
+          // The nearest over all ranks wins (lowest rank on a tie).
+          std::vector<Best> global(best);
+          MPI_Allreduce(best.data(),
+                        global.data(),
+                        n_points,
+                        MPI_DOUBLE_INT,
+                        MPI_MINLOC,
+                        comm);
+
+          ContactReport report;
+          report.points = n_points;
+          std::fill(d.line_load.begin(), d.line_load.end(), 0.);
+          Vector<double>                       gradient;
+          FullMatrix<double>                   hessian;
+          std::vector<types::global_dof_index> dofs;
+          for (unsigned int q = 0; q < n_points; ++q)
+            {
+              if (global[q].rank != rank ||
+                  best[q].distance == std::numeric_limits<double>::max())
+                continue;
+              const CablePoint  &pt = d.points[q];
+              const unsigned int m  = best_master[q];
+              const Projection   proj =
+                project(patches[m],
+                        (1. - pt.eta) * slave[pt.cable_cell][0] +
+                          pt.eta * slave[pt.cable_cell][1],
+                        d.radius,
+                        best_xi[q]);
+              if (proj.gap >= 0.)
+                continue;
+              penalty_terms(patches[m],
+                            slave[pt.cable_cell],
+                            pt.eta,
+                            d.radius,
+                            p.penalty,
+                            pt.weight,
+                            proj.xi,
+                            &gradient,
+                            tangent ? &hessian : nullptr);
+              dofs.assign(d.cell_dofs[pt.cable_cell].begin(),
+                          d.cell_dofs[pt.cable_cell].end());
+              dofs.insert(dofs.end(),
+                          masters[m].dofs.begin(),
+                          masters[m].dofs.end());
+              if (tangent && residual)
+                constraints.distribute_local_to_global(
+                  hessian, gradient, dofs, *tangent, *residual);
+              else if (residual)
+                constraints.distribute_local_to_global(gradient,
+                                                       dofs,
+                                                       *residual);
+              else if (tangent)
+                constraints.distribute_local_to_global(hessian,
+                                                       dofs,
+                                                       *tangent);
+              const double N = -p.penalty * proj.gap; // >= 0
+              d.line_load[q] = N;
+              ++report.active_points;
+              report.total_force += N * pt.weight;
+              for (unsigned int i = 0; i < 3; ++i)
+                report.force[i] += N * pt.weight * proj.normal[i];
+              report.max_penetration =
+                std::max(report.max_penetration, -proj.gap);
+              master_force[m] += N * pt.weight;
+            }
+          // Every rank reports the same numbers.
+          report.active_points =
+            Utilities::MPI::sum(report.active_points, comm);
+          report.total_force = Utilities::MPI::sum(report.total_force, comm);
+          for (unsigned int i = 0; i < 3; ++i)
+            report.force[i] = Utilities::MPI::sum(report.force[i], comm);
+          report.max_penetration =
+            Utilities::MPI::max(report.max_penetration, comm);
+          Utilities::MPI::sum(d.line_load, comm, d.line_load);
+          last_reports[k] = report;
+        }
+      if (residual)
+        residual->compress(VectorOperation::add);
+      if (tangent)
+        tangent->compress(VectorOperation::add);
+    }
+
+    Vector<double>
+    ContactSystem::cable_line_load(const unsigned int cable) const
+    {
+      Vector<double> load;
+      for (unsigned int k = 0; k < pairs.size(); ++k)
+        if (parameters.all()[k].cable == cable)
+          {
+            const PairData &d = pairs[k];
+            if (load.size() == 0)
+              load.reinit(d.cell_dofs.size());
+            std::vector<double> weight(d.cell_dofs.size(), 0.);
+            Vector<double>      sum(d.cell_dofs.size());
+            for (unsigned int q = 0; q < d.points.size(); ++q)
+              {
+                sum[d.points[q].cable_cell] += d.line_load[q] * d.points[q].weight;
+                weight[d.points[q].cable_cell] += d.points[q].weight;
+              }
+            for (unsigned int c = 0; c < load.size(); ++c)
+              load[c] += weight[c] > 0. ? sum[c] / weight[c] : 0.;
+          }
+      return load;
+    }
+
+    Vector<float>
+    ContactSystem::membrane_pressure(const unsigned int n_active_cells) const
+    {
+      Vector<float> pressure(n_active_cells);
+      for (unsigned int m = 0; m < masters.size(); ++m)
+        pressure[masters[m].cell->active_cell_index()] =
+          master_force[m] / masters[m].area;
+      return pressure;
+    }
+  } // namespace contact
+} // namespace pneuma

@@ -1,0 +1,154 @@
+// The contact point kernel (source paper eqs. 7-9): the penalty energy of
+// one slave point on a curved master patch (Q1 and Q2 lattices on a
+// perturbed cylinder), its gradient against central differences of the
+// energy and its Hessian against central differences of the gradient
+// (the variation of the normal and of the projection point included), and
+// the closest-point projection against a brute-force search.
+
+#include <deal.II/base/utilities.h>
+
+#include <pneuma/contact/contact_point.h>
+
+#include <cmath>
+#include <cstdio>
+
+using namespace dealii;
+using namespace pneuma::contact;
+
+int
+main()
+{
+  bool ok = true;
+  for (const unsigned int degree : {1u, 2u})
+    {
+      // A patch of the cylinder of radius 0.5 about x, slightly perturbed.
+      MasterPatch patch;
+      patch.degree           = degree;
+      const unsigned int n   = degree + 1;
+      for (unsigned int j = 0; j < n; ++j)
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const double x  = 0.2 * i / degree;
+            const double th = 0.3 * j / degree;
+            Tensor<1, 3> y;
+            y[0] = x + 0.003 * std::sin(7. * i + j);
+            y[1] = 0.5 * std::sin(th) + 0.002 * std::cos(3. * i + 5. * j);
+            y[2] = 0.5 * std::cos(th) + 0.002 * std::sin(i + 2. * j);
+            patch.nodes.push_back(y);
+          }
+      // rho_1 x rho_2 = (0, sin, cos) points outward here.
+      patch.sign = 1.;
+      const double radius = 0.01, penalty = 1e6, weight = 0.05;
+      std::array<Tensor<1, 3>, 2> slave;
+      slave[0][0] = 0.05, slave[0][1] = 0.503 * std::sin(0.12),
+      slave[0][2] = 0.503 * std::cos(0.12);
+      slave[1][0] = 0.16, slave[1][1] = 0.503 * std::sin(0.2),
+      slave[1][2] = 0.503 * std::cos(0.2);
+      const double eta = 0.37;
+
+      const auto energy_at = [&](const std::vector<double> &v,
+                                 Vector<double>            *g,
+                                 FullMatrix<double>        *H) {
+        MasterPatch                 p = patch;
+        std::array<Tensor<1, 3>, 2> s;
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            s[0][c] = v[c];
+            s[1][c] = v[3 + c];
+          }
+        for (unsigned int a = 0; a < p.nodes.size(); ++a)
+          for (unsigned int c = 0; c < 3; ++c)
+            p.nodes[a][c] = v[6 + 3 * a + c];
+        const Tensor<1, 3> x    = (1. - eta) * s[0] + eta * s[1];
+        const Projection   proj = project(p, x, radius);
+        return penalty_terms(p, s, eta, radius, penalty, weight, proj.xi, g, H);
+      };
+      std::vector<double> v;
+      for (unsigned int k = 0; k < 2; ++k)
+        for (unsigned int c = 0; c < 3; ++c)
+          v.push_back(slave[k][c]);
+      for (const auto &y : patch.nodes)
+        for (unsigned int c = 0; c < 3; ++c)
+          v.push_back(y[c]);
+      const unsigned int N = v.size();
+
+      Vector<double>     g;
+      FullMatrix<double> H;
+      const double       e = energy_at(v, &g, &H);
+      const Tensor<1, 3> x = (1. - eta) * slave[0] + eta * slave[1];
+      const Projection   proj = project(patch, x, radius);
+      std::printf("degree %u: inside %s, xi = (%.4f, %.4f), gap %.4e, "
+                  "energy %.4e\n",
+                  degree,
+                  proj.inside ? "yes" : "no",
+                  proj.xi[0],
+                  proj.xi[1],
+                  proj.gap,
+                  e);
+      // The slave is outside the cylinder, closer than R: in contact.
+      ok &= proj.inside && proj.gap < 0. && proj.gap > -radius && e > 0.;
+
+      double best = 1e300;
+      {
+        // Sample the patch and compare the nearest sample with the result.
+        MasterPatch p = patch;
+        const auto  position = [&](const double s, const double t) {
+          Tensor<1, 3> r;
+          const auto   l = [&](const unsigned int i, const double u) {
+            if (degree == 1)
+              return i == 0 ? 1. - u : u;
+            return i == 0 ? 2. * (u - 0.5) * (u - 1.) :
+                   i == 1 ? -4. * u * (u - 1.) :
+                            2. * u * (u - 0.5);
+          };
+          for (unsigned int j = 0; j < n; ++j)
+            for (unsigned int i = 0; i < n; ++i)
+              r += l(i, s) * l(j, t) * p.nodes[i + n * j];
+          return r;
+        };
+        for (unsigned int a = 0; a <= 400; ++a)
+          for (unsigned int b = 0; b <= 400; ++b)
+            best = std::min(best, (x - position(a / 400., b / 400.)).norm());
+        const bool pass = proj.distance <= best + 1e-12 &&
+                          best - proj.distance < 1e-5;
+        std::printf("  projection distance %.8f, nearest of 401^2 samples "
+                    "%.8f: %s\n",
+                    proj.distance,
+                    best,
+                    pass ? "PASS" : "FAIL");
+        ok &= pass;
+      }
+
+      // Gradient vs central differences of the energy.
+      const double h      = 1e-7;
+      double       g_err  = 0., g_max = 0., H_err = 0., H_max = 0.;
+      for (unsigned int i = 0; i < N; ++i)
+        {
+          auto vp = v, vm = v;
+          vp[i] += h;
+          vm[i] -= h;
+          Vector<double> gp, gm;
+          const double   fd = (energy_at(vp, &gp, nullptr) -
+                             energy_at(vm, &gm, nullptr)) /
+                            (2. * h);
+          g_err = std::max(g_err, std::abs(fd - g[i]));
+          g_max = std::max(g_max, std::abs(g[i]));
+          for (unsigned int j = 0; j < N; ++j)
+            {
+              const double fdH = (gp[j] - gm[j]) / (2. * h);
+              H_err            = std::max(H_err, std::abs(fdH - H(j, i)));
+              H_max            = std::max(H_max, std::abs(H(j, i)));
+            }
+        }
+      const bool pass_g = g_err / g_max < 1e-6, pass_H = H_err / H_max < 1e-6;
+      std::printf("  gradient vs finite differences: %s\n",
+                  pass_g ? "relative error < 1e-6" : "FAIL");
+      std::printf("  Hessian vs finite differences: %s\n",
+                  pass_H ? "relative error < 1e-6" : "FAIL");
+      if (!pass_g || !pass_H)
+        std::printf("  errors %.3e %.3e\n", g_err / g_max, H_err / H_max);
+      ok &= pass_g && pass_H;
+    }
+  std::printf("%s\n", ok ? "OK" : "FAILED");
+  return ok ? 0 : 1;
+}
