@@ -366,10 +366,10 @@ namespace pneuma
             m.wall_area                                    = 0.;
           if (with_vectors)
             {
-              m.q.reinit(assembler.dof_handler->locally_owned_dofs(), comm);
+              // The global partition (membrane and cable dofs), as u.
+              m.q.reinit(u.locally_owned_elements(), comm);
               if (loads[c].liquid)
-                m.q_liquid.reinit(assembler.dof_handler->locally_owned_dofs(),
-                                  comm);
+                m.q_liquid.reinit(u.locally_owned_elements(), comm);
             }
         }
     }

@@ -413,9 +413,13 @@ namespace pneuma
         if (s0 > 0. && newton.regularisation_factor() > 0.)
           return s0 / newton.regularisation_factor();
       }
+    // The membrane sets the scale (stiff cables must not slow its
+    // continuation down).
+    const types::global_dof_index n_membrane =
+      has_membrane() ? dof_handler.n_dofs() : locally_owned.size();
     double k_sum = 0., m_sum = 0.;
     for (const auto i : locally_owned)
-      if (!constraints.is_constrained(i))
+      if (i < n_membrane && !constraints.is_constrained(i))
         {
           k_sum += std::abs(tangent.diag_element(i));
           m_sum += laplacian.diag_element(i);
@@ -499,6 +503,15 @@ namespace pneuma
           }
       }
     return states;
+  }
+
+  void
+  Simulator::Impl::refresh_contact()
+  {
+    if (contact_system.empty())
+      return;
+    ghosted = solution;
+    contact_system.assemble(ghosted, constraints, nullptr, nullptr);
   }
 
   std::vector<ContactState>
@@ -707,6 +720,7 @@ namespace pneuma
         pcout << "  converged in " << result.iterations << " iterations, wall "
               << std::fixed << std::setprecision(2) << wall_clock.wall_time()
               << " s" << std::defaultfloat << std::setprecision(6) << std::endl;
+        refresh_contact();
         write_history_row(step, t_new, result.iterations);
         if (output.write_vtu && output.vtu_interval > 0
             && step % output.vtu_interval == 0)
@@ -716,6 +730,7 @@ namespace pneuma
 
     summary.n_steps         = step;
     summary.final_time      = current_time;
+    refresh_contact(); // the reports of the last converged state
     summary.n_linear_solves = n_linear_solves;
     ghosted                 = solution;
     // The last converged state is always written.

@@ -137,6 +137,9 @@ namespace pneuma
     cables::CableParameters   cable_parameters;
     contact::ContactParameters contact_parameters;
     unsigned int              degree = 1;
+    /// Contact reports (and output fields) at the current solution.
+    void
+    refresh_contact();
     /// Contact pair states of the last assembly.
     std::vector<ContactState>
     contact_states() const;

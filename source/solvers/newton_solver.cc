@@ -1,3 +1,5 @@
+#include <deal.II/base/utilities.h>
+
 #include <pneuma/solvers/newton_solver.h>
 
 #include <cmath>
@@ -134,6 +136,11 @@ namespace pneuma
           catch (const std::exception &e)
             {
               result.failure_reason = "linear solver failed";
+              if (print_table)
+                out << "    (linear solver: "
+                    << Utilities::trim(std::string(e.what()).substr(
+                         0, std::string(e.what()).find('\n', 1) + 200))
+                    << ")\n";
               return false;
             }
           ++result.iterations;
@@ -277,6 +284,7 @@ namespace pneuma
       problem.assemble(u, r); // the scale is taken from K at the start
       const double unit  = problem.shift_scale();
       double       shift = shift_factor * unit;
+      unsigned int   failures = 0;
       BorderedVector u_prev(u);
       while (result.iterations < 4 * max_iter)
         {
@@ -285,6 +293,10 @@ namespace pneuma
             {
               u = u_prev;
               shift *= 3.;
+              // A failure that costs no iteration (the linear solver)
+              // must not loop for ever.
+              if (++failures > 20)
+                break;
               continue;
             }
           problem.assemble(u, r);
