@@ -8,10 +8,15 @@
 // assembled tangent (cable, contact with the variation of the normal and
 // of the projection point) against central finite differences at a
 // perturbed contact state (Q1 and Q2), and the Newton iterations per
-// load step.
+// load step. Then V8 for a helix: a prestressed helix at alpha = 60
+// degrees to the axis (one turn, ends fixed) pressed onto the cylinder:
+// the line load is T sin^2(alpha)/rho, its integral over the turn
+// 2 pi T sin(alpha), and the frictionless cable does not drift along its
+// path (displacement of the middle node along the cable ~ 0).
 
 #include "test_tools.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -128,6 +133,69 @@ main(int argc, char **argv)
         std::printf(" %u", n);
       std::printf("\n");
     }
+  // V8, helix at 60 degrees to the axis, one turn from x = 0.5.
+  {
+    const double alpha = M_PI / 3., start = 10. * M_PI / 180.;
+    auto         settings = wrap(2);
+    settings.erase(std::remove_if(settings.begin(),
+                                  settings.end(),
+                                  [](const auto &e) {
+                                    return e.first.rfind("Cables/Cable 1/", 0) == 0;
+                                  }),
+                   settings.end());
+    const pneuma_test::Settings helix = {
+      {"Cables/Cable 1/Shape", "helix"},
+      {"Cables/Cable 1/Centre", "0.5, 0, 0"},
+      {"Cables/Cable 1/Axis", "1, 0, 0"},
+      {"Cables/Cable 1/Radius", "0.2398"},
+      {"Cables/Cable 1/Angle to axis", "60"},
+      {"Cables/Cable 1/Turns", "1"},
+      {"Cables/Cable 1/Start angle", "10"},
+      {"Cables/Cable 1/Number of elements", "64"},
+      {"Cables/Cable 1/Section semi-axes", "0.01"},
+      {"Cables/Cable 1/Prestress force", "1000"},
+      {"Cables/Cable 1/Start support", "fixed"},
+      {"Cables/Cable 1/End support", "fixed"}};
+    settings.insert(settings.end(), helix.begin(), helix.end());
+    const auto s = pneuma_test::run(settings);
+    if (s.exit_code != 0 || s.contact.empty() || s.cables.empty())
+      {
+        std::printf("helix: run failed (exit %d) FAIL\n", s.exit_code);
+        ok = false;
+      }
+    else
+      {
+        const auto  &c = s.contact[0];
+        const double T = 0.5 * (s.cables[0].max_force + s.cables[0].min_force);
+        std::printf("helix: cable force %.1f..%.1f N, %u/%u points in "
+                    "contact, penetration %.2e m\n",
+                    s.cables[0].min_force,
+                    s.cables[0].max_force,
+                    c.active_points,
+                    c.points,
+                    c.max_penetration);
+        ok &= pneuma_test::check("  integral of the line load = 2 pi T sin(alpha)",
+                                 c.total_force,
+                                 2. * M_PI * T * std::sin(alpha),
+                                 5e-3);
+        // The middle node (half a turn): tangent t = cos(a) e_x + sin(a)
+        // e_theta of the helix, e_theta at angle start + pi.
+        const double       th = start + M_PI;
+        const dealii::Tensor<1, 3> e_x({1., 0., 0.}),
+          e_theta({0., -std::cos(th), -std::sin(th)});
+        const dealii::Tensor<1, 3> t =
+          std::cos(alpha) * e_x + std::sin(alpha) * e_theta;
+        dealii::Tensor<1, 3> u;
+        for (unsigned int d = 0; d < 3; ++d)
+          u[d] = s.cables[0].mid_displacement[d];
+        const bool pass = std::abs(u * t) < 1e-5;
+        std::printf("  no drift: middle node moved %.1e m along the cable "
+                    "(limit 1e-5) %s\n",
+                    std::abs(u * t) < 5e-7 ? 0. : std::abs(u * t),
+                    pass ? "PASS" : "FAIL");
+        ok &= pass;
+      }
+  }
   std::printf("%s\n", ok ? "OK" : "FAILED");
   return ok ? 0 : 1;
 }
