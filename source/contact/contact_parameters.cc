@@ -58,7 +58,7 @@ namespace pneuma
                             Patterns::Double(0.),
                             "Membrane cells closer than R + this to a cable "
                             "element (current configuration, updated every "
-                            "load step) are contact candidates [m] (0: 2 R "
+                            "load step) are contact candidates [m] (0: R "
                             "plus one cable element length).");
           prm.declare_entry("Friction coefficient",
                             "0",

@@ -195,6 +195,82 @@ namespace pneuma
       return p;
     }
 
+    namespace
+    {
+      /**
+       * The penalty energy of one point. Its gradient is known in closed
+       * form at
+       * the closest point (envelope theorem: the projection is stationary
+       * and (x - rho) is parallel to n, so dn does not enter),
+       *   dPi/dx_b = w eps xi3 N_b(eta) n,  dPi/dy_a = -w eps xi3 phi_a(xi) n,
+       * and the Hessian is its Jacobian, taken with first-order Sacado
+       * numbers through two Newton steps of the projection (which carry
+       * dxi/dv exactly).
+       */
+      template <int n>
+      double
+      penalty_terms_envelope(const MasterPatch                 &patch,
+                             const std::array<Tensor<1, 3>, 2> &slave,
+                             const double                       eta,
+                             const double                       radius,
+                             const double                       penalty,
+                             const double                       weight,
+                             const Point<2>                    &xi_converged,
+                             Vector<double>                    *gradient,
+                             FullMatrix<double>                *hessian)
+      {
+        using AD               = Sacado::Fad::SFad<double, n>;
+        const unsigned int n_m = patch.nodes.size();
+        AD                 x[3];
+        for (unsigned int c = 0; c < 3; ++c)
+          x[c] = (1. - eta) * AD(n, c, slave[0][c]) +
+                 eta * AD(n, 3 + c, slave[1][c]);
+        std::vector<std::array<AD, 3>> y(n_m);
+        for (unsigned int a = 0; a < n_m; ++a)
+          for (unsigned int c = 0; c < 3; ++c)
+            y[a][c] = AD(n, 6 + 3 * a + c, patch.nodes[a][c]);
+        AD xi[2] = {AD(xi_converged[0]), AD(xi_converged[1])};
+        newton_step(patch.degree, y, x, xi);
+        newton_step(patch.degree, y, x, xi);
+        AD       normal[3];
+        const AD g = gap(patch.degree, y, x, xi, patch.sign, radius, normal);
+        if (gradient)
+          gradient->reinit(n);
+        if (hessian)
+          hessian->reinit(n, n);
+        if (g.val() >= 0.)
+          return 0.;
+        // phi_a(xi) in lattice order.
+        AD                 l1[3], dl1[3], ddl1[3], l2[3], dl2[3], ddl2[3];
+        lagrange(patch.degree, xi[0], l1, dl1, ddl1);
+        lagrange(patch.degree, xi[1], l2, dl2, ddl2);
+        const unsigned int k = patch.degree + 1;
+        const AD           s = weight * penalty * g;
+        for (unsigned int var = 0; var < n; ++var)
+          {
+            AD gv;
+            if (var < 6)
+              gv = s * (var < 3 ? 1. - eta : eta) * normal[var % 3];
+            else
+              {
+                const unsigned int a = (var - 6) / 3, c = (var - 6) % 3;
+                gv = -s * l1[a % k] * l2[a / k] * normal[c];
+              }
+            if (gradient)
+              (*gradient)(var) = gv.val();
+            if (hessian)
+              for (unsigned int j = 0; j < n; ++j)
+                (*hessian)(var, j) = gv.dx(j);
+          }
+        if (hessian)
+          for (unsigned int a = 0; a < n; ++a)
+            for (unsigned int b = 0; b < a; ++b)
+              (*hessian)(a, b) = (*hessian)(b, a) =
+                0.5 * ((*hessian)(a, b) + (*hessian)(b, a));
+        return 0.5 * weight * penalty * g.val() * g.val();
+      }
+    } // namespace
+
     double
     penalty_terms(const MasterPatch                 &patch,
                   const std::array<Tensor<1, 3>, 2> &slave,
@@ -202,61 +278,15 @@ namespace pneuma
                   const double                       radius,
                   const double                       penalty,
                   const double                       weight,
-                  const Point<2>                    &xi_converged,
+                  const Point<2>                    &xi,
                   Vector<double>                    *gradient,
                   FullMatrix<double>                *hessian)
     {
-      using AD1              = Sacado::Fad::DFad<double>;
-      using AD2              = Sacado::Fad::DFad<AD1>;
-      const unsigned int n_m = patch.nodes.size();
-      const unsigned int n   = 6 + 3 * n_m;
-      // Independent variables: value, first (outer) and inner seeds.
-      const auto variable = [n](const unsigned int k, const double v) {
-        return AD2(n, k, AD1(n, k, v));
-      };
-      AD2 x[3];
-      for (unsigned int c = 0; c < 3; ++c)
-        x[c] = (1. - eta) * variable(c, slave[0][c]) +
-               eta * variable(3 + c, slave[1][c]);
-      std::vector<std::array<AD2, 3>> y(n_m);
-      for (unsigned int a = 0; a < n_m; ++a)
-        for (unsigned int c = 0; c < 3; ++c)
-          y[a][c] = variable(6 + 3 * a + c, patch.nodes[a][c]);
-      // Two Newton steps from the converged point carry the derivatives of
-      // the projection (first and second order).
-      AD2 xi[2] = {AD2(xi_converged[0]), AD2(xi_converged[1])};
-      newton_step(patch.degree, y, x, xi);
-      newton_step(patch.degree, y, x, xi);
-      AD2       normal[3];
-      const AD2 g = gap(patch.degree, y, x, xi, patch.sign, radius, normal);
-      if (g.val().val() >= 0.)
-        {
-          if (gradient)
-            gradient->reinit(n);
-          if (hessian)
-            hessian->reinit(n, n);
-          return 0.;
-        }
-      const AD2 energy = 0.5 * weight * penalty * g * g;
-      if (gradient)
-        {
-          gradient->reinit(n);
-          for (unsigned int i = 0; i < n; ++i)
-            (*gradient)(i) = energy.dx(i).val();
-        }
-      if (hessian)
-        {
-          hessian->reinit(n, n);
-          for (unsigned int i = 0; i < n; ++i)
-            for (unsigned int j = 0; j < n; ++j)
-              (*hessian)(i, j) = energy.dx(i).dx(j);
-          // Symmetric up to round-off; make it exactly so.
-          for (unsigned int i = 0; i < n; ++i)
-            for (unsigned int j = 0; j < i; ++j)
-              (*hessian)(i, j) = (*hessian)(j, i) =
-                0.5 * ((*hessian)(i, j) + (*hessian)(j, i));
-        }
-      return energy.val().val();
+      if (patch.degree == 1)
+        return penalty_terms_envelope<18>(
+          patch, slave, eta, radius, penalty, weight, xi, gradient, hessian);
+      return penalty_terms_envelope<33>(
+        patch, slave, eta, radius, penalty, weight, xi, gradient, hessian);
     }
   } // namespace contact
 } // namespace pneuma

@@ -123,7 +123,7 @@ namespace pneuma
             }
           d.radius = p.radius > 0. ? p.radius : v.radius;
           d.search =
-            p.search_distance > 0. ? p.search_distance : 2. * d.radius + h_max;
+            p.search_distance > 0. ? p.search_distance : d.radius + h_max;
           d.candidates.resize(index);
           d.line_load.assign(d.points.size(), 0.);
           pairs.push_back(d);
@@ -261,6 +261,8 @@ namespace pneuma
                                  u[d.cell_dofs[c][3 * v + i]];
           std::vector<MasterPatch> patches(masters.size());
           std::vector<bool>        have_patch(masters.size(), false);
+          std::vector<std::pair<Tensor<1, 3>, Tensor<1, 3>>> boxes(
+            masters.size());
           for (unsigned int q = 0; q < n_points; ++q)
             {
               const CablePoint  &pt = d.points[q];
@@ -272,7 +274,29 @@ namespace pneuma
                     {
                       patches[m]    = patch(masters[m], d, p.outside, &u);
                       have_patch[m] = true;
+                      // Current box of the cell, for the cheap test below.
+                      boxes[m].first = boxes[m].second = patches[m].nodes[0];
+                      for (const auto &y : patches[m].nodes)
+                        for (unsigned int i = 0; i < 3; ++i)
+                          {
+                            boxes[m].first[i] = std::min(boxes[m].first[i], y[i]);
+                            boxes[m].second[i] =
+                              std::max(boxes[m].second[i], y[i]);
+                          }
                     }
+                  // A point farther than R from the cell's box (plus the
+                  // bulge of a curved cell, bounded by its box size) cannot
+                  // touch it.
+                  bool near = true;
+                  for (unsigned int i = 0; i < 3 && near; ++i)
+                    {
+                      const double margin =
+                        d.radius + 0.25 * (boxes[m].second[i] - boxes[m].first[i]);
+                      near = x[i] >= boxes[m].first[i] - margin &&
+                             x[i] <= boxes[m].second[i] + margin;
+                    }
+                  if (!near)
+                    continue;
                   const Projection proj = project(patches[m], x, d.radius);
                   if (proj.inside && proj.distance < best[q].distance)
                     {

@@ -625,7 +625,12 @@ namespace pneuma
             // New contact candidates of the current state; the sparsity
             // pattern grows if they bring new couplings.
             ghosted = solution;
-            if (contact_system.update_candidates(&ghosted))
+            bool grown = false;
+            {
+              TimerOutput::Scope ts(timer, "contact search");
+              grown = contact_system.update_candidates(&ghosted);
+            }
+            if (grown)
               build_matrices();
           }
         pcout << "Step " << step + 1 << "  t = " << t_new

@@ -40,7 +40,7 @@ namespace pneuma
       /// Integration along each cable element.
       bool         lobatto          = false;
       unsigned int points_per_element = 2;
-      /// Extra distance for the candidate search [m] (0: 2 R + one cable
+      /// Extra distance for the candidate search [m] (0: R + one cable
       /// element length).
       double search_distance = 0.;
     };

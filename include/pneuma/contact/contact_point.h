@@ -19,12 +19,17 @@
  * \f$\Pi = w\,\tfrac{\varepsilon_N}{2}(\xi^3)^2\f$ (w: the integration
  * weight, a length), so that the contact line load is
  * \f$N = \varepsilon_N \xi^3\f$ (paper eq. 9). Its gradient and Hessian with
- * respect to the slave and master node positions are exact: the energy is
- * evaluated with nested forward automatic differentiation (Trilinos
- * Sacado) after two Newton steps of the projection taken in the
- * differentiated numbers from the converged \f$\xi^*\f$, which gives the
- * derivatives of the projection point (implicit function theorem) and with
- * them the variation of the normal and of the projection point.
+ * respect to the slave and master node positions are exact. The gradient
+ * is known in closed form at the closest point (envelope theorem: the
+ * projection is stationary and \f$x_s - \rho \parallel n\f$, so the
+ * variation of n does not enter):
+ * \f$\partial\Pi/\partial x_b = w\varepsilon_N\xi^3 N_b(\eta)\,n\f$,
+ * \f$\partial\Pi/\partial y_a = -w\varepsilon_N\xi^3\phi_a(\xi^*)\,n\f$.
+ * The Hessian is its Jacobian, evaluated with first-order forward automatic
+ * differentiation (Trilinos Sacado, statically sized) after two Newton
+ * steps of the projection taken in the differentiated numbers from the
+ * converged \f$\xi^*\f$; they carry \f$d\xi^{*}\!/dv\f$ (implicit function
+ * theorem), i.e. the variation of the normal and of the projection point.
  */
 
 #include <deal.II/base/point.h>
