@@ -44,7 +44,6 @@ check "$k" 1 "Cables/Cable 1/End moment: a cable element carries no moment" --se
 check "$k" 1 "Cables/Cable 1/Pitch: a helix needs" --set "Cables/Cable 1/Shape=helix"
 check "$k" 1 "Contact/Number of pairs: contact needs a membrane" --set "Contact/Number of pairs=1"
 check "$dir/valid.prm" 1 "Contact/Pair 1/Cable: there is no cable 1" --set "Contact/Number of pairs=1"
-check "$k" 1 "Contact/Pair 1/Friction coefficient: friction is not implemented yet" --set "Contact/Number of pairs=1" --set "Contact/Pair 1/Friction coefficient=0.3"
 c="$dir/chamber_valid.prm"
 check "$c" 1 "Chambers/Chamber 1/Regions: the oriented walls do not close" --set "Chambers/Chamber 1/Regions=0, 1"
 check "$c" 1 "flipping region 1 or 2 closes it" --set "Chambers/Chamber 1/Regions=0, -1, 2"

@@ -2,8 +2,9 @@
 // one slave point on a curved master patch (Q1 and Q2 lattices on a
 // perturbed cylinder), its gradient against central differences of the
 // energy and its Hessian against central differences of the gradient
-// (the variation of the normal and of the projection point included), and
-// the closest-point projection against a brute-force search.
+// (the variation of the normal and of the projection point included), the
+// closest-point projection against a brute-force search, and the friction
+// force's Jacobian (stick and slip) against central differences.
 
 #include <deal.II/base/utilities.h>
 
@@ -148,6 +149,57 @@ main()
       if (!pass_g || !pass_H)
         std::printf("  errors %.3e %.3e\n", g_err / g_max, H_err / H_max);
       ok &= pass_g && pass_H;
+
+      // Friction: the force and its (non-symmetric) Jacobian against
+      // central differences, sticking (anchor 0.1 mm away) and slipping
+      // (anchor 5 cm away), mu = 0.3, eps_T = eps_N.
+      for (const double offset : {0.0005, 0.25})
+        {
+          const Point<2> xi_anchor(proj.xi[0] + offset, proj.xi[1] - offset);
+          const auto force_at = [&](const std::vector<double> &w,
+                                    Vector<double>            &f,
+                                    FullMatrix<double>        *J) {
+            MasterPatch                 pm = patch;
+            std::array<Tensor<1, 3>, 2> sl;
+            for (unsigned int c = 0; c < 3; ++c)
+              {
+                sl[0][c] = w[c];
+                sl[1][c] = w[3 + c];
+              }
+            for (unsigned int a = 0; a < pm.nodes.size(); ++a)
+              for (unsigned int c = 0; c < 3; ++c)
+                pm.nodes[a][c] = w[6 + 3 * a + c];
+            const Tensor<1, 3> xs = (1. - eta) * sl[0] + eta * sl[1];
+            const Projection   pr = project(pm, xs, radius);
+            return friction_terms(pm, pm, true, xi_anchor, sl, eta, radius,
+                                  penalty, penalty, 0.3, weight, pr.xi, &f, J);
+          };
+          Vector<double>      f;
+          FullMatrix<double>  J;
+          const FrictionState st = force_at(v, f, &J);
+          double              err = 0., big = 0.;
+          for (unsigned int i = 0; i < N; ++i)
+            {
+              auto vp = v, vm = v;
+              vp[i] += h;
+              vm[i] -= h;
+              Vector<double> fp, fm;
+              force_at(vp, fp, nullptr);
+              force_at(vm, fm, nullptr);
+              for (unsigned int j = 0; j < N; ++j)
+                {
+                  err = std::max(err, std::abs((fp[j] - fm[j]) / (2. * h) - J(j, i)));
+                  big = std::max(big, std::abs(J(j, i)));
+                }
+            }
+          const bool pass = err / big < 1e-6;
+          std::printf("  friction, %s: Jacobian vs finite differences: %s\n",
+                      st.slip ? "slip" : "stick",
+                      pass ? "relative error < 1e-6" : "FAIL");
+          if (!pass)
+            std::printf("  error %.3e\n", err / big);
+          ok &= pass && st.slip == (offset > 0.1);
+        }
     }
   std::printf("%s\n", ok ? "OK" : "FAILED");
   return ok ? 0 : 1;

@@ -63,8 +63,15 @@ namespace pneuma
           prm.declare_entry("Friction coefficient",
                             "0",
                             Patterns::Double(0.),
-                            "Coulomb friction (not implemented yet: must be "
-                            "0).");
+                            "Coulomb friction mu (0: frictionless). The "
+                            "cable sticks elastically (Tangential penalty) "
+                            "until the tangential force reaches mu N, then "
+                            "slips.");
+          prm.declare_entry("Tangential penalty",
+                            "0",
+                            Patterns::Double(0.),
+                            "eps_T [N/m^2]: tangential line load per unit "
+                            "elastic slip while sticking (0: the Penalty).");
           prm.leave_subsection();
         }
       prm.leave_subsection();
@@ -102,10 +109,10 @@ namespace pneuma
                       p.path + "/Points per element",
                       "Lobatto integration needs at least 2 points");
           p.search_distance = prm.get_double("Search distance");
-          check_input(prm.get_double("Friction coefficient") == 0.,
-                      p.path + "/Friction coefficient",
-                      "friction is not implemented yet; only frictionless "
-                      "contact (0)");
+          p.friction           = prm.get_double("Friction coefficient");
+          p.tangential_penalty = prm.get_double("Tangential penalty");
+          if (p.tangential_penalty == 0.)
+            p.tangential_penalty = p.penalty;
           prm.leave_subsection();
           pairs.push_back(p);
         }

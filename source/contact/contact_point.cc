@@ -288,5 +288,151 @@ namespace pneuma
       return penalty_terms_envelope<33>(
         patch, slave, eta, radius, penalty, weight, xi, gradient, hessian);
     }
+    namespace
+    {
+      template <int n>
+      FrictionState
+      friction_sized(const MasterPatch                 &patch,
+                     const MasterPatch                 &anchor,
+                     const bool                         anchor_is_master,
+                     const Point<2>                    &xi_anchor,
+                     const std::array<Tensor<1, 3>, 2> &slave,
+                     const double                       eta,
+                     const double                       radius,
+                     const double                       eps_N,
+                     const double                       eps_T,
+                     const double                       mu,
+                     const double                       weight,
+                     const Point<2>                    &xi_converged,
+                     Vector<double>                    *residual,
+                     FullMatrix<double>                *jacobian)
+      {
+        using AD               = Sacado::Fad::SFad<double, n>;
+        const unsigned int n_m = patch.nodes.size();
+        const unsigned int n_used = anchor_is_master ? 6 + 3 * n_m : n;
+        AD                 x[3];
+        for (unsigned int c = 0; c < 3; ++c)
+          x[c] = (1. - eta) * AD(n, c, slave[0][c]) +
+                 eta * AD(n, 3 + c, slave[1][c]);
+        std::vector<std::array<AD, 3>> y(n_m), z(n_m);
+        for (unsigned int a = 0; a < n_m; ++a)
+          for (unsigned int c = 0; c < 3; ++c)
+            {
+              y[a][c] = AD(n, 6 + 3 * a + c, patch.nodes[a][c]);
+              z[a][c] = anchor_is_master ?
+                          y[a][c] :
+                          AD(n, 6 + 3 * n_m + 3 * a + c, anchor.nodes[a][c]);
+            }
+        AD xi[2] = {AD(xi_converged[0]), AD(xi_converged[1])};
+        newton_step(patch.degree, y, x, xi);
+        newton_step(patch.degree, y, x, xi);
+        AD       normal[3];
+        const AD g = gap(patch.degree, y, x, xi, patch.sign, radius, normal);
+        FrictionState state;
+        if (residual)
+          residual->reinit(n_used);
+        if (jacobian)
+          jacobian->reinit(n_used, n_used);
+        if (g.val() >= 0.)
+          return state;
+        const AD N = -eps_N * g;
+        // Anchor point and the trial traction.
+        AD l1[3], dl1[3], ddl1[3], l2[3], dl2[3], ddl2[3];
+        lagrange(anchor.degree, AD(xi_anchor[0]), l1, dl1, ddl1);
+        lagrange(anchor.degree, AD(xi_anchor[1]), l2, dl2, ddl2);
+        const unsigned int k = anchor.degree + 1;
+        AD                 ya[3] = {0., 0., 0.};
+        for (unsigned int a = 0; a < n_m; ++a)
+          for (unsigned int c = 0; c < 3; ++c)
+            ya[c] += l1[a % k] * l2[a / k] * z[a][c];
+        AD d[3], dn = 0.;
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            d[c] = x[c] - ya[c];
+            dn += d[c] * normal[c];
+          }
+        AD t[3], t_norm2 = 0.;
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            t[c] = -eps_T * (d[c] - dn * normal[c]);
+            t_norm2 += t[c] * t[c];
+          }
+        using std::sqrt;
+        const AD t_norm = sqrt(t_norm2 + 1e-300);
+        if (t_norm.val() > mu * N.val())
+          {
+            state.slip = true;
+            for (unsigned int c = 0; c < 3; ++c)
+              t[c] = mu * N * t[c] / t_norm;
+          }
+        // Master shape functions at the contact point.
+        AD m1[3], dm1[3], ddm1[3], m2[3], dm2[3], ddm2[3];
+        lagrange(patch.degree, xi[0], m1, dm1, ddm1);
+        lagrange(patch.degree, xi[1], m2, dm2, ddm2);
+        std::vector<AD> r(n_used);
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            r[c]     = -weight * (1. - eta) * t[c];
+            r[3 + c] = -weight * eta * t[c];
+          }
+        for (unsigned int a = 0; a < n_m; ++a)
+          for (unsigned int c = 0; c < 3; ++c)
+            r[6 + 3 * a + c] = weight * m1[a % k] * m2[a / k] * t[c];
+        for (unsigned int i = 0; i < n_used; ++i)
+          {
+            if (residual)
+              (*residual)(i) = r[i].val();
+            if (jacobian)
+              for (unsigned int j = 0; j < n_used; ++j)
+                (*jacobian)(i, j) = r[i].dx(j);
+          }
+        // State for the update of the anchor.
+        Tensor<1, 3> rho;
+        {
+          double v1[3], dv1[3], ddv1[3], v2[3], dv2[3], ddv2[3];
+          lagrange(patch.degree, xi[0].val(), v1, dv1, ddv1);
+          lagrange(patch.degree, xi[1].val(), v2, dv2, ddv2);
+          for (unsigned int a = 0; a < n_m; ++a)
+            for (unsigned int c = 0; c < 3; ++c)
+              rho[c] += v1[a % k] * v2[a / k] * patch.nodes[a][c];
+        }
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            state.traction[c]      = t[c].val();
+            state.anchor_target[c] = ya[c].val();
+          }
+        if (state.slip)
+          // Dragged so that the elastic tangential offset is mu N / eps_T.
+          state.anchor_target = rho + state.traction / eps_T;
+        return state;
+      }
+    } // namespace
+
+    FrictionState
+    friction_terms(const MasterPatch                 &patch,
+                   const MasterPatch                 &anchor,
+                   const bool                         anchor_is_master,
+                   const Point<2>                    &xi_anchor,
+                   const std::array<Tensor<1, 3>, 2> &slave,
+                   const double                       eta,
+                   const double                       radius,
+                   const double                       penalty,
+                   const double                       tangential_penalty,
+                   const double                       mu,
+                   const double                       weight,
+                   const Point<2>                    &xi,
+                   Vector<double>                    *residual,
+                   FullMatrix<double>                *jacobian)
+    {
+      if (patch.degree == 1)
+        return friction_sized<30>(patch, anchor, anchor_is_master, xi_anchor,
+                                  slave, eta, radius, penalty,
+                                  tangential_penalty, mu, weight, xi,
+                                  residual, jacobian);
+      return friction_sized<60>(patch, anchor, anchor_is_master, xi_anchor,
+                                slave, eta, radius, penalty,
+                                tangential_penalty, mu, weight, xi, residual,
+                                jacobian);
+    }
   } // namespace contact
 } // namespace pneuma

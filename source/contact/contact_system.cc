@@ -126,6 +126,10 @@ namespace pneuma
             p.search_distance > 0. ? p.search_distance : d.radius + h_max;
           d.candidates.resize(index);
           d.line_load.assign(d.points.size(), 0.);
+          d.anchor.assign(d.points.size(), -1);
+          d.pending_anchor.assign(d.points.size(), -1);
+          d.anchor_xi.assign(d.points.size(), Point<2>());
+          d.pending_xi.assign(d.points.size(), Point<2>());
           pairs.push_back(d);
         }
       last_reports.assign(pairs.size(), ContactReport());
@@ -318,6 +322,9 @@ namespace pneuma
           ContactReport report;
           report.points = n_points;
           std::fill(d.line_load.begin(), d.line_load.end(), 0.);
+          std::fill(d.pending_anchor.begin(), d.pending_anchor.end(), -1);
+          Vector<double>     f_residual;
+          FullMatrix<double> f_jacobian;
           Vector<double>                       gradient;
           FullMatrix<double>                   hessian;
           std::vector<types::global_dof_index> dofs;
@@ -370,6 +377,102 @@ namespace pneuma
               report.max_penetration =
                 std::max(report.max_penetration, -proj.gap);
               master_force[m] += N * pt.weight;
+
+              if (p.friction > 0.)
+                {
+                  const std::array<Tensor<1, 3>, 2> &sl = slave[pt.cable_cell];
+                  if (d.anchor[q] < 0)
+                    {
+                      // First contact: stick where it touches.
+                      d.pending_anchor[q] = m;
+                      d.pending_xi[q]     = proj.xi;
+                      continue;
+                    }
+                  // The anchor, expressed on the current cell m.
+                  Point<2> xi_a = d.anchor_xi[q];
+                  if (static_cast<unsigned int>(d.anchor[q]) != m)
+                    {
+                      const unsigned int ma = d.anchor[q];
+                      if (!have_patch[ma])
+                        {
+                          patches[ma]    = patch(masters[ma], d, p.outside, &u);
+                          have_patch[ma] = true;
+                        }
+                      Tensor<1, 3> ya;
+                      // rho_ma(xi_a) by the lattice interpolation.
+                      const unsigned int k = degree + 1;
+                      const auto         l = [&](const unsigned int i, const double t) {
+                        if (degree == 1)
+                          return i == 0 ? 1. - t : t;
+                        return i == 0 ? 2. * (t - 0.5) * (t - 1.) :
+                               i == 1 ? -4. * t * (t - 1.) :
+                                        2. * t * (t - 0.5);
+                      };
+                      for (unsigned int a = 0; a < patches[ma].nodes.size(); ++a)
+                        ya += l(a % k, xi_a[0]) * l(a / k, xi_a[1]) *
+                              patches[ma].nodes[a];
+                      xi_a = project(patches[m], ya, 0., proj.xi).xi;
+                    }
+                  const FrictionState fs = friction_terms(patches[m],
+                                                          patches[m],
+                                                          true,
+                                                          xi_a,
+                                                          sl,
+                                                          pt.eta,
+                                                          d.radius,
+                                                          p.penalty,
+                                                          p.tangential_penalty,
+                                                          p.friction,
+                                                          pt.weight,
+                                                          proj.xi,
+                                                          &f_residual,
+                                                          tangent ? &f_jacobian : nullptr);
+                  if (tangent && residual)
+                    constraints.distribute_local_to_global(
+                      f_jacobian, f_residual, dofs, *tangent, *residual);
+                  else if (residual)
+                    constraints.distribute_local_to_global(f_residual,
+                                                           dofs,
+                                                           *residual);
+                  else if (tangent)
+                    constraints.distribute_local_to_global(f_jacobian,
+                                                           dofs,
+                                                           *tangent);
+                  report.friction_force += fs.traction.norm() * pt.weight;
+                  if (fs.slip)
+                    {
+                      ++report.slip_points;
+                      // Where the slip drags the anchor: its projection on
+                      // this cable element's candidates.
+                      double best_d = std::numeric_limits<double>::max();
+                      for (const unsigned int c : d.candidates[pt.cable_cell])
+                        {
+                          if (!have_patch[c])
+                            {
+                              patches[c]    = patch(masters[c], d, p.outside, &u);
+                              have_patch[c] = true;
+                            }
+                          const Projection a =
+                            project(patches[c], fs.anchor_target, 0.);
+                          if (a.inside && a.distance < best_d)
+                            {
+                              best_d              = a.distance;
+                              d.pending_anchor[q] = c;
+                              d.pending_xi[q]     = a.xi;
+                            }
+                        }
+                      if (d.pending_anchor[q] < 0)
+                        {
+                          d.pending_anchor[q] = m;
+                          d.pending_xi[q]     = xi_a;
+                        }
+                    }
+                  else
+                    {
+                      d.pending_anchor[q] = m;
+                      d.pending_xi[q]     = xi_a;
+                    }
+                }
             }
           // Every rank reports the same numbers.
           report.active_points =
@@ -379,6 +482,9 @@ namespace pneuma
             report.force[i] = Utilities::MPI::sum(report.force[i], comm);
           report.max_penetration =
             Utilities::MPI::max(report.max_penetration, comm);
+          report.slip_points = Utilities::MPI::sum(report.slip_points, comm);
+          report.friction_force =
+            Utilities::MPI::sum(report.friction_force, comm);
           Utilities::MPI::sum(d.line_load, comm, d.line_load);
           last_reports[k] = report;
         }
@@ -386,6 +492,16 @@ namespace pneuma
         residual->compress(VectorOperation::add);
       if (tangent)
         tangent->compress(VectorOperation::add);
+    }
+
+    void
+    ContactSystem::commit_step()
+    {
+      for (auto &d : pairs)
+        {
+          d.anchor    = d.pending_anchor;
+          d.anchor_xi = d.pending_xi;
+        }
     }
 
     Vector<double>

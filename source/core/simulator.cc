@@ -526,6 +526,8 @@ namespace pneuma
         c.total_force     = r.total_force;
         c.max_penetration = r.max_penetration;
         c.force           = r.force;
+        c.slip_points     = r.slip_points;
+        c.friction_force  = r.friction_force;
         states.push_back(c);
       }
     return states;
@@ -726,6 +728,7 @@ namespace pneuma
               << std::fixed << std::setprecision(2) << wall_clock.wall_time()
               << " s" << std::defaultfloat << std::setprecision(6) << std::endl;
         refresh_contact();
+        contact_system.commit_step(); // friction: anchors of this state
         write_history_row(step, t_new, result.iterations);
         if (output.write_vtu && output.vtu_interval > 0
             && step % output.vtu_interval == 0)

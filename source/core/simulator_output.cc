@@ -443,6 +443,8 @@ namespace pneuma
              << ", \"points\": " << c.points
              << ", \"total_force\": " << c.total_force
              << ", \"max_penetration\": " << c.max_penetration
+             << ", \"slip_points\": " << c.slip_points
+             << ", \"friction_force\": " << c.friction_force
              << ", \"force\": ";
         triple(c.force);
         json << "}";

@@ -43,6 +43,9 @@ namespace pneuma
       /// Extra distance for the candidate search [m] (0: R + one cable
       /// element length).
       double search_distance = 0.;
+      /// Coulomb friction coefficient mu and tangential penalty eps_T
+      /// [N/m^2] (0: eps_N).
+      double friction = 0., tangential_penalty = 0.;
     };
 
     /// The "Contact" subsection.

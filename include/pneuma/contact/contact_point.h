@@ -91,5 +91,44 @@ namespace pneuma
                   const Point<2>                    &xi,
                   Vector<double>                    *gradient,
                   FullMatrix<double>                *hessian);
+
+    /// Result of the friction law at one point.
+    struct FrictionState
+    {
+      bool slip = false;
+      /// Tangential force on the cable per length [N/m] (vector).
+      Tensor<1, 3> traction;
+      /// Where the stick anchor goes if this state is accepted: the
+      /// current anchor (stick) or the point a slip has dragged it to.
+      Tensor<1, 3> anchor_target;
+    };
+
+    /**
+     * Regularised Coulomb friction of one point (doc/theory.md §10.2): the
+     * slave sticks elastically (tangential penalty eps_T) to the material
+     * point y_a = sum phi_a(xi_a) z_a of an anchor cell (nodes z, fixed
+     * convective coordinates xi_a); the trial traction
+     * t = -eps_T (I - n n)(x_s - y_a) is limited to |t| <= mu N with
+     * N = -eps_N xi3 (slip: t = mu N t/|t|). The force w t acts on the
+     * cable point and -w t on the master at the contact point xi.
+     * Adds to @p residual (r = f_int - f_ext) and @p jacobian (not
+     * symmetric in slip) over the variables: slave (6), master nodes,
+     * then the anchor nodes unless @p anchor_is_master.
+     */
+    FrictionState
+    friction_terms(const MasterPatch                 &patch,
+                   const MasterPatch                 &anchor,
+                   const bool                         anchor_is_master,
+                   const Point<2>                    &xi_anchor,
+                   const std::array<Tensor<1, 3>, 2> &slave,
+                   const double                       eta,
+                   const double                       radius,
+                   const double                       penalty,
+                   const double                       tangential_penalty,
+                   const double                       mu,
+                   const double                       weight,
+                   const Point<2>                    &xi,
+                   Vector<double>                    *residual,
+                   FullMatrix<double>                *jacobian);
   } // namespace contact
 } // namespace pneuma

@@ -49,6 +49,9 @@ namespace pneuma
       std::array<double, 3> force{{0., 0., 0.}};
       /// Largest penetration -xi3 [m] (0 if none).
       double max_penetration = 0.;
+      /// Friction: points that slip, and the integral of |t| [N].
+      unsigned int slip_points    = 0;
+      double       friction_force = 0.;
     };
 
     /// The contact pairs of a scene.
@@ -97,6 +100,11 @@ namespace pneuma
                LA::SparseMatrix                *tangent,
                LA::Vector                      *residual);
 
+      /// Accept the friction state of the last assembly (the converged
+      /// one): stick anchors stay, slipping ones move.
+      void
+      commit_step();
+
       /// Reports of the last assembly, one per pair (same on every rank).
       const std::vector<ContactReport> &
       reports() const
@@ -144,6 +152,11 @@ namespace pneuma
         std::vector<std::vector<unsigned int>> candidates;
         /// Per point of the last assembly: line load N (>= 0), or 0.
         std::vector<double> line_load;
+        /// Friction: per point the stick anchor (local master, -1: none)
+        /// and its convective coordinates, and what the last assembly
+        /// would make of it.
+        std::vector<int>      anchor, pending_anchor;
+        std::vector<Point<2>> anchor_xi, pending_xi;
       };
 
       MasterPatch

@@ -62,6 +62,9 @@ namespace pneuma
     /// cable [N], largest penetration [m].
     double                total_force = 0., max_penetration = 0.;
     std::array<double, 3> force{{0., 0., 0.}};
+    /// Friction: slipping points, integral of the tangential load [N].
+    unsigned int slip_points    = 0;
+    double       friction_force = 0.;
   };
 
   /// What a finished run reports (also written to summary.json).

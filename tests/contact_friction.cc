@@ -1,0 +1,150 @@
+// Coulomb friction (regularised: elastic stick with a tangential penalty,
+// then slip at mu N), V8 capstan checks on a fixed Q2 cylinder (R = 0.23 m,
+// mu = 0.2):
+//  - half wrap: a cable over the top, one end pulled down by a dead force
+//    T1 = 1000 N (held only in the plane), the other end pulled down 4 mm:
+//    once the whole wrap slips, the held end carries T2 = T1 exp(mu pi);
+//  - helix at alpha = 60 degrees, one turn: the free end pulled back along
+//    its tangent by T1, the other end pulled on along its tangent:
+//    T2/T1 = exp(mu phi sin(alpha)); compared between the first and last
+//    element forces, i.e. over phi = 2 pi (n - 1)/n for n elements.
+
+#include "test_tools.h"
+
+#include <cmath>
+#include <string>
+
+namespace
+{
+  std::string
+  number(const double x)
+  {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.12g", x);
+    return buffer;
+  }
+
+  pneuma_test::Settings
+  cylinder()
+  {
+    return {{"Geometry/Type", "closed cylinder"},
+            {"Geometry/Radius", "0.23"},
+            {"Geometry/Length", "2"},
+            {"Geometry/Global refinements", "2"},
+            {"Discretisation/Polynomial degree", "2"},
+            {"Boundary conditions/Fixed regions", "0, 1, 2"},
+            {"Contact/Number of pairs", "1"},
+            {"Contact/Pair 1/Penalty", "1e8"},
+            {"Contact/Pair 1/Friction coefficient", "0.2"},
+            {"Load stepping/Initial increment", "0.05"},
+            {"Load stepping/Maximum increment", "0.05"}};
+  }
+
+  void
+  add(pneuma_test::Settings &s, const pneuma_test::Settings &more)
+  {
+    s.insert(s.end(), more.begin(), more.end());
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  bool                                     ok = true;
+  const double                             mu = 0.2, T1 = 1000.;
+
+  // Half wrap.
+  {
+    const double R = 0.23, r = 0.01, rc = R + r - 2e-4, x = 1.;
+    std::string  points;
+    const auto   point = [&](const double y, const double z) {
+      points += (points.empty() ? "" : "; ") + number(x) + ", " + number(y) +
+                ", " + number(z);
+    };
+    point(-rc, -0.3);
+    point(-rc, 0.);
+    for (unsigned int i = 1; i < 24; ++i)
+      point(rc * std::cos(M_PI - M_PI * i / 24.), rc * std::sin(M_PI - M_PI * i / 24.));
+    point(rc, 0.);
+    point(rc, -0.3);
+    auto s = cylinder();
+    add(s,
+        {{"Cables/Number of cables", "1"},
+         {"Cables/Cable 1/Points", points},
+         {"Cables/Cable 1/Number of elements", "40"},
+         {"Cables/Cable 1/Section semi-axes", "0.01"},
+         {"Cables/Cable 1/Prestress force", "1000"},
+         {"Cables/Cable 1/Start support", "fixed"},
+         {"Cables/Cable 1/Start components", "xy"},
+         {"Cables/Cable 1/End forces", "true"},
+         {"Cables/Cable 1/Start force/Function expression", "0; 0; -1000"},
+         {"Cables/Cable 1/End support", "fixed"},
+         {"Cables/Cable 1/End displacement/Function expression",
+          "0; 0; -0.004*t"}});
+    const auto result = pneuma_test::run(s);
+    if (result.exit_code != 0 || result.cables.empty())
+      {
+        std::printf("half wrap: run failed (exit %d) FAIL\n", result.exit_code);
+        ok = false;
+      }
+    else
+      {
+        std::printf("half wrap: Newton iterations per step:");
+        for (const auto n : result.step_iterations)
+          std::printf(" %u", n);
+        std::printf("\n");
+        ok &= pneuma_test::check("half wrap: T2 = T1 exp(mu pi)",
+                                 -result.cables[0].end_reaction[2],
+                                 T1 * std::exp(mu * M_PI),
+                                 5e-3);
+      }
+  }
+
+  // Helix, one turn at 60 degrees to the axis.
+  {
+    const double       alpha = M_PI / 3., th = 10. * M_PI / 180.;
+    const unsigned int n     = 64;
+    const double       t[3]  = {std::cos(alpha),
+                                -std::sin(alpha) * std::cos(th),
+                                -std::sin(alpha) * std::sin(th)};
+    auto               s     = cylinder();
+    add(s,
+        {{"Cables/Number of cables", "1"},
+         {"Cables/Cable 1/Shape", "helix"},
+         {"Cables/Cable 1/Centre", "0.5, 0, 0"},
+         {"Cables/Cable 1/Axis", "1, 0, 0"},
+         {"Cables/Cable 1/Radius", "0.2398"},
+         {"Cables/Cable 1/Angle to axis", "60"},
+         {"Cables/Cable 1/Turns", "1"},
+         {"Cables/Cable 1/Start angle", "10"},
+         {"Cables/Cable 1/Number of elements", std::to_string(n)},
+         {"Cables/Cable 1/Section semi-axes", "0.01"},
+         {"Cables/Cable 1/Prestress force", "1000"},
+         {"Cables/Cable 1/End forces", "true"},
+         {"Cables/Cable 1/Start force/Function expression",
+          number(-T1 * t[0]) + "; " + number(-T1 * t[1]) + "; " +
+            number(-T1 * t[2])},
+         {"Cables/Cable 1/End support", "fixed"},
+         {"Cables/Cable 1/End displacement/Function expression",
+          number(0.004 * t[0]) + "*t; " + number(0.004 * t[1]) + "*t; " +
+            number(0.004 * t[2]) + "*t"}});
+    const auto result = pneuma_test::run(s);
+    if (result.exit_code != 0 || result.cables.empty())
+      {
+        std::printf("helix: run failed (exit %d) FAIL\n", result.exit_code);
+        ok = false;
+      }
+    else
+      {
+        const double phi = 2. * M_PI * (n - 1.) / n;
+        ok &= pneuma_test::check(
+          "helix: T2/T1 = exp(mu phi sin(alpha))",
+          result.cables[0].max_force / result.cables[0].min_force,
+          std::exp(mu * phi * std::sin(alpha)),
+          5e-3);
+      }
+  }
+  std::printf("%s\n", ok ? "OK" : "FAILED");
+  return ok ? 0 : 1;
+}
