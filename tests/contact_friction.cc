@@ -7,7 +7,12 @@
 //  - helix at alpha = 60 degrees, one turn: the free end pulled back along
 //    its tangent by T1, the other end pulled on along its tangent:
 //    T2/T1 = exp(mu phi sin(alpha)); compared between the first and last
-//    element forces, i.e. over phi = 2 pi (n - 1)/n for n elements.
+//    element forces, i.e. over phi = 2 pi (n - 1)/n for n elements;
+//  - V8 ring: a closed prestressed ring pressed onto the cylinder (friction
+//    mu = 0.1 holds its rigid rotation and axial sliding, which a
+//    frictionless ring cannot resist; points in contact at the start stick
+//    where they are): line load T/rho, so its integral is 2 pi T, and the
+//    resultant vanishes.
 
 #include "test_tools.h"
 
@@ -143,6 +148,53 @@ main(int argc, char **argv)
           result.cables[0].max_force / result.cables[0].min_force,
           std::exp(mu * phi * std::sin(alpha)),
           5e-3);
+      }
+  }
+  // V8 ring.
+  {
+    auto s = cylinder();
+    for (auto &e : s)
+      if (e.first == "Contact/Pair 1/Friction coefficient")
+        e.second = "0.1";
+    add(s,
+        {{"Cables/Number of cables", "1"},
+         {"Cables/Cable 1/Shape", "ring"},
+         {"Cables/Cable 1/Centre", "1.03, 0, 0"},
+         {"Cables/Cable 1/Axis", "1, 0, 0"},
+         {"Cables/Cable 1/Radius", "0.2398"},
+         {"Cables/Cable 1/Number of elements", "64"},
+         {"Cables/Cable 1/Section semi-axes", "0.01"},
+         {"Cables/Cable 1/Prestress force", "1000"},
+         {"Load stepping/Initial increment", "0.25"},
+         {"Load stepping/Maximum increment", "0.5"}});
+    const auto result = pneuma_test::run(s);
+    if (result.exit_code != 0 || result.cables.empty() || result.contact.empty())
+      {
+        std::printf("ring: run failed (exit %d) FAIL\n", result.exit_code);
+        ok = false;
+      }
+    else
+      {
+        const auto  &c = result.contact[0];
+        const double T =
+          0.5 * (result.cables[0].max_force + result.cables[0].min_force);
+        std::printf("ring: cable force %.1f N, %u/%u points in contact\n",
+                    T,
+                    c.active_points,
+                    c.points);
+        ok &= pneuma_test::check("ring: integral of the line load = 2 pi T",
+                                 c.total_force,
+                                 2. * M_PI * T,
+                                 5e-3);
+        const double resultant =
+          std::sqrt(c.force[0] * c.force[0] + c.force[1] * c.force[1] +
+                    c.force[2] * c.force[2]);
+        const bool pass = resultant < 1e-6 * c.total_force;
+        std::printf("ring: resultant %.1e of the total (limit 1e-6) %s\n",
+                    resultant / c.total_force < 5e-12 ? 0. :
+                                                        resultant / c.total_force,
+                    pass ? "PASS" : "FAIL");
+        ok &= pass;
       }
   }
   std::printf("%s\n", ok ? "OK" : "FAILED");

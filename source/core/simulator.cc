@@ -597,6 +597,9 @@ namespace pneuma
         chamber_system.initialize(ghosted, 0.);
         summary.chamber_history.emplace_back(0., chamber_states());
       }
+    // Friction: points in contact at the start stick where they are.
+    refresh_contact();
+    contact_system.commit_step();
     write_history_row(0, 0., 0);
     if (output.write_vtu)
       write_vtu(0, 0.);
