@@ -4,7 +4,8 @@
 // energy and its Hessian against central differences of the gradient
 // (the variation of the normal and of the projection point included), the
 // closest-point projection against a brute-force search, and the friction
-// force's Jacobian (stick and slip) against central differences.
+// force's Jacobian (stick and slip) against central differences; and the
+// elliptic solid-beam section in the gap.
 
 #include <deal.II/base/utilities.h>
 
@@ -150,6 +151,73 @@ main()
         std::printf("  errors %.3e %.3e\n", g_err / g_max, H_err / H_max);
       ok &= pass_g && pass_H;
 
+      // Solid-beam slave: the elliptic section's extent along n,
+      // h = sqrt((a1.n)^2 + (a2.n)^2), with the section unknowns as
+      // variables (energy gradient and Hessian against finite differences).
+      {
+        SlaveSection section;
+        section.a1[0] = Tensor<1, 3>({0., 0.006, 0.0});
+        section.a2[0] = Tensor<1, 3>({0.001, 0., 0.009});
+        section.a1[1] = Tensor<1, 3>({0., 0.0062, 0.0005});
+        section.a2[1] = Tensor<1, 3>({0.0008, -0.0004, 0.0088});
+        const auto energy_s = [&](const std::vector<double> &w,
+                                  Vector<double>            *gs,
+                                  FullMatrix<double>        *Hs) {
+          MasterPatch                 pm = patch;
+          std::array<Tensor<1, 3>, 2> sl;
+          SlaveSection                sc;
+          for (unsigned int c = 0; c < 3; ++c)
+            {
+              sl[0][c]    = w[c];
+              sl[1][c]    = w[3 + c];
+              sc.a1[0][c] = w[6 + c];
+              sc.a2[0][c] = w[9 + c];
+              sc.a1[1][c] = w[12 + c];
+              sc.a2[1][c] = w[15 + c];
+            }
+          for (unsigned int a = 0; a < pm.nodes.size(); ++a)
+            for (unsigned int c = 0; c < 3; ++c)
+              pm.nodes[a][c] = w[18 + 3 * a + c];
+          const Tensor<1, 3> xs = (1. - eta) * sl[0] + eta * sl[1];
+          const Projection   pr = project(pm, xs, radius);
+          return penalty_terms(pm, sl, eta, radius, penalty, weight, pr.xi, gs,
+                               Hs, &sc);
+        };
+        std::vector<double> w(v.begin(), v.begin() + 6);
+        for (const auto *vec : {&section.a1[0], &section.a2[0], &section.a1[1],
+                                &section.a2[1]})
+          for (unsigned int c = 0; c < 3; ++c)
+            w.push_back((*vec)[c]);
+        w.insert(w.end(), v.begin() + 6, v.end());
+        Vector<double>     gs;
+        FullMatrix<double> Hs;
+        const double       es = energy_s(w, &gs, &Hs);
+        double             eg = 0., mg = 0., eH = 0., mH = 0.;
+        for (unsigned int i = 0; i < w.size(); ++i)
+          {
+            auto wp = w, wm = w;
+            wp[i] += h;
+            wm[i] -= h;
+            Vector<double> gp, gm;
+            const double   fd = (energy_s(wp, &gp, nullptr) - energy_s(wm, &gm, nullptr)) /
+                              (2. * h);
+            eg = std::max(eg, std::abs(fd - gs[i]));
+            mg = std::max(mg, std::abs(gs[i]));
+            for (unsigned int j = 0; j < w.size(); ++j)
+              {
+                eH = std::max(eH, std::abs((gp[j] - gm[j]) / (2. * h) - Hs(j, i)));
+                mH = std::max(mH, std::abs(Hs(j, i)));
+              }
+          }
+        const bool pass = es > 0. && eg / mg < 1e-6 && eH / mH < 1e-6;
+        std::printf("  elliptic solid-beam section: gradient and Hessian vs "
+                    "finite differences: %s\n",
+                    pass ? "relative error < 1e-6" : "FAIL");
+        if (!pass)
+          std::printf("  energy %.3e errors %.3e %.3e\n", es, eg / mg, eH / mH);
+        ok &= pass;
+      }
+
       // Friction: the force and its (non-symmetric) Jacobian against
       // central differences, sticking (anchor 0.1 mm away) and slipping
       // (anchor 5 cm away), mu = 0.3, eps_T = eps_N.
@@ -171,7 +239,7 @@ main()
                 pm.nodes[a][c] = w[6 + 3 * a + c];
             const Tensor<1, 3> xs = (1. - eta) * sl[0] + eta * sl[1];
             const Projection   pr = project(pm, xs, radius);
-            return friction_terms(pm, pm, true, xi_anchor, sl, eta, radius,
+            return friction_terms(pm, xi_anchor, sl, eta, radius,
                                   penalty, penalty, 0.3, weight, pr.xi, &f, J);
           };
           Vector<double>      f;

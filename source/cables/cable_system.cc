@@ -87,6 +87,7 @@ namespace pneuma
       v.reference   = &b.reference;
       v.radius =
         std::max(b.definition.section_a, b.definition.section_b);
+      v.solid_beam = static_cast<bool>(b.beam);
       return v;
     }
 

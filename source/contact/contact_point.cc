@@ -122,7 +122,9 @@ namespace pneuma
         xi[1] -= s1;
       }
 
-      /// Gap (x - rho(xi)).n - R with n = sign rho_1 x rho_2 / |...|.
+      /// Gap (x - rho(xi)).n - h with n = sign rho_1 x rho_2 / |...| and
+      /// h = R, or, for an elliptic section with semi-axis vectors a1, a2,
+      /// its extent along n, h = sqrt((a1.n)^2 + (a2.n)^2).
       template <typename Number>
       Number
       gap(const unsigned int                        degree,
@@ -131,7 +133,9 @@ namespace pneuma
           const Number                              xi[2],
           const double                              sign,
           const double                              radius,
-          Number                                    normal[3])
+          Number                                    normal[3],
+          const Number                             *a1 = nullptr,
+          const Number                             *a2 = nullptr)
       {
         Number rho[3], d[2][3], dd[2][2][3];
         surface(degree, y, xi, rho, d, dd);
@@ -140,13 +144,21 @@ namespace pneuma
                        d[0][0] * d[1][1] - d[0][1] * d[1][0]};
         using std::sqrt;
         const Number length = sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
-        Number g = -radius;
+        Number g = 0.;
         for (unsigned int c = 0; c < 3; ++c)
           {
             normal[c] = sign * m[c] / length;
             g += (x[c] - rho[c]) * normal[c];
           }
-        return g;
+        if (a1 == nullptr)
+          return g - radius;
+        Number p1 = 0., p2 = 0.;
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            p1 += a1[c] * normal[c];
+            p2 += a2[c] * normal[c];
+          }
+        return g - sqrt(p1 * p1 + p2 * p2);
       }
     } // namespace
 
@@ -271,6 +283,76 @@ namespace pneuma
       }
     } // namespace
 
+    namespace
+    {
+      /**
+       * The penalty energy with an elliptic slave section: h(n) depends on
+       * n, so the closed-form gradient of the circular case does not hold;
+       * energy, gradient and Hessian come from nested (second-order)
+       * Sacado numbers, again through two Newton steps of the projection.
+       * Variables: slave (6), section a1, a2 at both nodes (12), master.
+       */
+      template <int n>
+      double
+      penalty_terms_section(const MasterPatch                 &patch,
+                            const SlaveSection                &section,
+                            const std::array<Tensor<1, 3>, 2> &slave,
+                            const double                       eta,
+                            const double                       penalty,
+                            const double                       weight,
+                            const Point<2>                    &xi_converged,
+                            Vector<double>                    *gradient,
+                            FullMatrix<double>                *hessian)
+      {
+        using AD1              = Sacado::Fad::SFad<double, n>;
+        using AD2              = Sacado::Fad::SFad<AD1, n>;
+        const unsigned int n_m = patch.nodes.size();
+        const auto variable = [](const unsigned int k, const double v) {
+          return AD2(n, k, AD1(n, k, v));
+        };
+        AD2 x[3], a1[3], a2[3];
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            x[c]  = (1. - eta) * variable(c, slave[0][c]) +
+                   eta * variable(3 + c, slave[1][c]);
+            a1[c] = (1. - eta) * variable(6 + c, section.a1[0][c]) +
+                    eta * variable(12 + c, section.a1[1][c]);
+            a2[c] = (1. - eta) * variable(9 + c, section.a2[0][c]) +
+                    eta * variable(15 + c, section.a2[1][c]);
+          }
+        std::vector<std::array<AD2, 3>> y(n_m);
+        for (unsigned int a = 0; a < n_m; ++a)
+          for (unsigned int c = 0; c < 3; ++c)
+            y[a][c] = variable(18 + 3 * a + c, patch.nodes[a][c]);
+        AD2 xi[2] = {AD2(xi_converged[0]), AD2(xi_converged[1])};
+        newton_step(patch.degree, y, x, xi);
+        newton_step(patch.degree, y, x, xi);
+        AD2       normal[3];
+        const AD2 g = gap(patch.degree, y, x, xi, patch.sign, 0., normal, a1, a2);
+        if (gradient)
+          gradient->reinit(n);
+        if (hessian)
+          hessian->reinit(n, n);
+        if (g.val().val() >= 0.)
+          return 0.;
+        const AD2 energy = 0.5 * weight * penalty * g * g;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            if (gradient)
+              (*gradient)(i) = energy.dx(i).val();
+            if (hessian)
+              for (unsigned int j = 0; j < n; ++j)
+                (*hessian)(i, j) = energy.dx(i).dx(j);
+          }
+        if (hessian)
+          for (unsigned int a = 0; a < n; ++a)
+            for (unsigned int b = 0; b < a; ++b)
+              (*hessian)(a, b) = (*hessian)(b, a) =
+                0.5 * ((*hessian)(a, b) + (*hessian)(b, a));
+        return energy.val().val();
+      }
+    } // namespace
+
     double
     penalty_terms(const MasterPatch                 &patch,
                   const std::array<Tensor<1, 3>, 2> &slave,
@@ -280,8 +362,17 @@ namespace pneuma
                   const double                       weight,
                   const Point<2>                    &xi,
                   Vector<double>                    *gradient,
-                  FullMatrix<double>                *hessian)
+                  FullMatrix<double>                *hessian,
+                  const SlaveSection                *section)
     {
+      if (section)
+        return patch.degree == 1 ?
+                 penalty_terms_section<30>(patch, *section, slave, eta,
+                                           penalty, weight, xi, gradient,
+                                           hessian) :
+                 penalty_terms_section<45>(patch, *section, slave, eta,
+                                           penalty, weight, xi, gradient,
+                                           hessian);
       if (patch.degree == 1)
         return penalty_terms_envelope<18>(
           patch, slave, eta, radius, penalty, weight, xi, gradient, hessian);
@@ -293,8 +384,7 @@ namespace pneuma
       template <int n>
       FrictionState
       friction_sized(const MasterPatch                 &patch,
-                     const MasterPatch                 &anchor,
-                     const bool                         anchor_is_master,
+                     const SlaveSection                *section,
                      const Point<2>                    &xi_anchor,
                      const std::array<Tensor<1, 3>, 2> &slave,
                      const double                       eta,
@@ -309,25 +399,31 @@ namespace pneuma
       {
         using AD               = Sacado::Fad::SFad<double, n>;
         const unsigned int n_m = patch.nodes.size();
-        const unsigned int n_used = anchor_is_master ? 6 + 3 * n_m : n;
-        AD                 x[3];
+        const unsigned int m0  = section ? 18 : 6; // first master variable
+        const unsigned int n_used = m0 + 3 * n_m;
+        AD                 x[3], a1[3], a2[3];
         for (unsigned int c = 0; c < 3; ++c)
           x[c] = (1. - eta) * AD(n, c, slave[0][c]) +
                  eta * AD(n, 3 + c, slave[1][c]);
-        std::vector<std::array<AD, 3>> y(n_m), z(n_m);
-        for (unsigned int a = 0; a < n_m; ++a)
+        if (section)
           for (unsigned int c = 0; c < 3; ++c)
             {
-              y[a][c] = AD(n, 6 + 3 * a + c, patch.nodes[a][c]);
-              z[a][c] = anchor_is_master ?
-                          y[a][c] :
-                          AD(n, 6 + 3 * n_m + 3 * a + c, anchor.nodes[a][c]);
+              a1[c] = (1. - eta) * AD(n, 6 + c, section->a1[0][c]) +
+                      eta * AD(n, 12 + c, section->a1[1][c]);
+              a2[c] = (1. - eta) * AD(n, 9 + c, section->a2[0][c]) +
+                      eta * AD(n, 15 + c, section->a2[1][c]);
             }
+        std::vector<std::array<AD, 3>> y(n_m);
+        for (unsigned int a = 0; a < n_m; ++a)
+          for (unsigned int c = 0; c < 3; ++c)
+            y[a][c] = AD(n, m0 + 3 * a + c, patch.nodes[a][c]);
+        const auto &z = y;
         AD xi[2] = {AD(xi_converged[0]), AD(xi_converged[1])};
         newton_step(patch.degree, y, x, xi);
         newton_step(patch.degree, y, x, xi);
         AD       normal[3];
-        const AD g = gap(patch.degree, y, x, xi, patch.sign, radius, normal);
+        const AD g = gap(patch.degree, y, x, xi, patch.sign, radius, normal,
+                         section ? a1 : nullptr, section ? a2 : nullptr);
         FrictionState state;
         if (residual)
           residual->reinit(n_used);
@@ -338,9 +434,9 @@ namespace pneuma
         const AD N = -eps_N * g;
         // Anchor point and the trial traction.
         AD l1[3], dl1[3], ddl1[3], l2[3], dl2[3], ddl2[3];
-        lagrange(anchor.degree, AD(xi_anchor[0]), l1, dl1, ddl1);
-        lagrange(anchor.degree, AD(xi_anchor[1]), l2, dl2, ddl2);
-        const unsigned int k = anchor.degree + 1;
+        lagrange(patch.degree, AD(xi_anchor[0]), l1, dl1, ddl1);
+        lagrange(patch.degree, AD(xi_anchor[1]), l2, dl2, ddl2);
+        const unsigned int k = patch.degree + 1;
         AD                 ya[3] = {0., 0., 0.};
         for (unsigned int a = 0; a < n_m; ++a)
           for (unsigned int c = 0; c < 3; ++c)
@@ -377,7 +473,7 @@ namespace pneuma
           }
         for (unsigned int a = 0; a < n_m; ++a)
           for (unsigned int c = 0; c < 3; ++c)
-            r[6 + 3 * a + c] = weight * m1[a % k] * m2[a / k] * t[c];
+            r[m0 + 3 * a + c] = weight * m1[a % k] * m2[a / k] * t[c];
         for (unsigned int i = 0; i < n_used; ++i)
           {
             if (residual)
@@ -410,8 +506,6 @@ namespace pneuma
 
     FrictionState
     friction_terms(const MasterPatch                 &patch,
-                   const MasterPatch                 &anchor,
-                   const bool                         anchor_is_master,
                    const Point<2>                    &xi_anchor,
                    const std::array<Tensor<1, 3>, 2> &slave,
                    const double                       eta,
@@ -422,17 +516,16 @@ namespace pneuma
                    const double                       weight,
                    const Point<2>                    &xi,
                    Vector<double>                    *residual,
-                   FullMatrix<double>                *jacobian)
+                   FullMatrix<double>                *jacobian,
+                   const SlaveSection                *section)
     {
+#define PNEUMA_FRICTION(n)                                                    \
+  friction_sized<n>(patch, section, xi_anchor, slave, eta, radius, penalty,   \
+                    tangential_penalty, mu, weight, xi, residual, jacobian)
       if (patch.degree == 1)
-        return friction_sized<30>(patch, anchor, anchor_is_master, xi_anchor,
-                                  slave, eta, radius, penalty,
-                                  tangential_penalty, mu, weight, xi,
-                                  residual, jacobian);
-      return friction_sized<60>(patch, anchor, anchor_is_master, xi_anchor,
-                                slave, eta, radius, penalty,
-                                tangential_penalty, mu, weight, xi, residual,
-                                jacobian);
+        return section ? PNEUMA_FRICTION(30) : PNEUMA_FRICTION(18);
+      return section ? PNEUMA_FRICTION(45) : PNEUMA_FRICTION(33);
+#undef PNEUMA_FRICTION
     }
   } // namespace contact
 } // namespace pneuma

@@ -101,17 +101,28 @@ namespace pneuma
                                                 gauss;
           unsigned int index = 0;
           double       h_max = 0.;
+          d.beam = v.solid_beam && p.radius == 0.;
           for (const auto &cell : v.dof_handler->active_cell_iterators())
             {
-              std::array<types::global_dof_index, 6> dofs;
-              std::array<Tensor<1, 3>, 2>            X;
+              std::vector<types::global_dof_index> dofs(d.beam ? 18 : 6);
+              std::vector<double>                  values(dofs.size());
+              std::array<Tensor<1, 3>, 2>          X;
               for (unsigned int vtx = 0; vtx < 2; ++vtx)
-                for (unsigned int c = 0; c < 3; ++c)
-                  {
-                    const auto local = cell->vertex_dof_index(vtx, c);
-                    dofs[3 * vtx + c] = v.offset + local;
-                    X[vtx][c]         = (*v.reference)[local];
-                  }
+                {
+                  for (unsigned int c = 0; c < 3; ++c)
+                    {
+                      const auto local  = cell->vertex_dof_index(vtx, c);
+                      dofs[3 * vtx + c] = v.offset + local;
+                      X[vtx][c]         = (*v.reference)[local];
+                    }
+                  if (d.beam)
+                    for (unsigned int c = 0; c < 6; ++c)
+                      dofs[6 + 6 * vtx + c] =
+                        v.offset + cell->vertex_dof_index(vtx, 3 + c);
+                }
+              for (unsigned int i = 0; i < dofs.size(); ++i)
+                values[i] = (*v.reference)[dofs[i] - v.offset];
+              d.cell_reference_values.push_back(values);
               const double length = (X[1] - X[0]).norm();
               h_max               = std::max(h_max, length);
               for (unsigned int q = 0; q < rule.size(); ++q)
@@ -263,6 +274,18 @@ namespace pneuma
               for (unsigned int i = 0; i < 3; ++i)
                 slave[c][v][i] = d.cell_reference[c][v][i] +
                                  u[d.cell_dofs[c][3 * v + i]];
+          // Solid beam: the current section at the element's nodes.
+          std::vector<SlaveSection> sections(d.beam ? d.cell_dofs.size() : 0);
+          for (unsigned int c = 0; c < sections.size(); ++c)
+            for (unsigned int v = 0; v < 2; ++v)
+              for (unsigned int i = 0; i < 3; ++i)
+                {
+                  const unsigned int j1 = 6 + 6 * v + i, j2 = j1 + 3;
+                  sections[c].a1[v][i] = d.cell_reference_values[c][j1] +
+                                         u[d.cell_dofs[c][j1]];
+                  sections[c].a2[v][i] = d.cell_reference_values[c][j2] +
+                                         u[d.cell_dofs[c][j2]];
+                }
           std::vector<MasterPatch> patches(masters.size());
           std::vector<bool>        have_patch(masters.size(), false);
           std::vector<std::pair<Tensor<1, 3>, Tensor<1, 3>>> boxes(
@@ -341,7 +364,18 @@ namespace pneuma
                           pt.eta * slave[pt.cable_cell][1],
                         d.radius,
                         best_xi[q]);
-              if (proj.gap >= 0.)
+              double gap = proj.gap;
+              if (d.beam)
+                {
+                  // The section's extent along n instead of R.
+                  const SlaveSection &sc = sections[pt.cable_cell];
+                  const Tensor<1, 3>  a1 =
+                    (1. - pt.eta) * sc.a1[0] + pt.eta * sc.a1[1];
+                  const Tensor<1, 3> a2 =
+                    (1. - pt.eta) * sc.a2[0] + pt.eta * sc.a2[1];
+                  gap += d.radius - std::hypot(a1 * proj.normal, a2 * proj.normal);
+                }
+              if (gap >= 0.)
                 continue;
               penalty_terms(patches[m],
                             slave[pt.cable_cell],
@@ -351,7 +385,8 @@ namespace pneuma
                             pt.weight,
                             proj.xi,
                             &gradient,
-                            tangent ? &hessian : nullptr);
+                            tangent ? &hessian : nullptr,
+                            d.beam ? &sections[pt.cable_cell] : nullptr);
               dofs.assign(d.cell_dofs[pt.cable_cell].begin(),
                           d.cell_dofs[pt.cable_cell].end());
               dofs.insert(dofs.end(),
@@ -368,14 +403,14 @@ namespace pneuma
                 constraints.distribute_local_to_global(hessian,
                                                        dofs,
                                                        *tangent);
-              const double N = -p.penalty * proj.gap; // >= 0
+              const double N = -p.penalty * gap; // >= 0
               d.line_load[q] = N;
               ++report.active_points;
               report.total_force += N * pt.weight;
               for (unsigned int i = 0; i < 3; ++i)
                 report.force[i] += N * pt.weight * proj.normal[i];
               report.max_penetration =
-                std::max(report.max_penetration, -proj.gap);
+                std::max(report.max_penetration, -gap);
               master_force[m] += N * pt.weight;
 
               if (p.friction > 0.)
@@ -414,8 +449,6 @@ namespace pneuma
                       xi_a = project(patches[m], ya, 0., proj.xi).xi;
                     }
                   const FrictionState fs = friction_terms(patches[m],
-                                                          patches[m],
-                                                          true,
                                                           xi_a,
                                                           sl,
                                                           pt.eta,
@@ -426,7 +459,8 @@ namespace pneuma
                                                           pt.weight,
                                                           proj.xi,
                                                           &f_residual,
-                                                          tangent ? &f_jacobian : nullptr);
+                                                          tangent ? &f_jacobian : nullptr,
+                                                          d.beam ? &sections[pt.cable_cell] : nullptr);
                   if (tangent && residual)
                     constraints.distribute_local_to_global(
                       f_jacobian, f_residual, dofs, *tangent, *residual);

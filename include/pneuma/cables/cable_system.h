@@ -72,6 +72,8 @@ namespace pneuma
       const Vector<double> *reference = nullptr;
       /// Larger semi-axis of the section [m].
       double radius = 0.;
+      /// True for a solid beam (components 3-8: section semi-axis vectors).
+      bool solid_beam = false;
     };
 
     /// The cable block of the global system.

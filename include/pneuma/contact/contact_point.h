@@ -56,6 +56,18 @@ namespace pneuma
       double sign = 1.;
     };
 
+    /**
+     * The current elliptic section of a solid-beam slave: its semi-axis
+     * vectors at the two nodes of the cable element. The gap then uses the
+     * section's extent along the normal, h(n) = sqrt((a1.n)^2 + (a2.n)^2)
+     * (the support function of the ellipse), instead of a fixed radius,
+     * and the section unknowns become variables of the contact terms.
+     */
+    struct SlaveSection
+    {
+      std::array<Tensor<1, 3>, 2> a1, a2;
+    };
+
     /// Result of a closest-point projection.
     struct Projection
     {
@@ -77,9 +89,9 @@ namespace pneuma
 
     /**
      * Penalty energy of one point and, if requested, its gradient and
-     * Hessian. Variables: slave node 0 (xyz), slave node 1 (xyz), then the
-     * master nodes (xyz each, lattice order). @p xi is the converged
-     * projection.
+     * Hessian. Variables: slave node 0 (xyz), slave node 1 (xyz), with a
+     * @p section its a1, a2 at node 0 and at node 1 (12), then the master
+     * nodes (xyz each, lattice order). @p xi is the converged projection.
      */
     double
     penalty_terms(const MasterPatch                 &patch,
@@ -90,7 +102,8 @@ namespace pneuma
                   const double                       weight,
                   const Point<2>                    &xi,
                   Vector<double>                    *gradient,
-                  FullMatrix<double>                *hessian);
+                  FullMatrix<double>                *hessian,
+                  const SlaveSection                *section = nullptr);
 
     /// Result of the friction law at one point.
     struct FrictionState
@@ -112,13 +125,11 @@ namespace pneuma
      * N = -eps_N xi3 (slip: t = mu N t/|t|). The force w t acts on the
      * cable point and -w t on the master at the contact point xi.
      * Adds to @p residual (r = f_int - f_ext) and @p jacobian (not
-     * symmetric in slip) over the variables: slave (6), master nodes,
-     * then the anchor nodes unless @p anchor_is_master.
+     * symmetric in slip) over the variables of penalty_terms(); the anchor
+     * is a material point of the same master cell.
      */
     FrictionState
     friction_terms(const MasterPatch                 &patch,
-                   const MasterPatch                 &anchor,
-                   const bool                         anchor_is_master,
                    const Point<2>                    &xi_anchor,
                    const std::array<Tensor<1, 3>, 2> &slave,
                    const double                       eta,
@@ -129,6 +140,7 @@ namespace pneuma
                    const double                       weight,
                    const Point<2>                    &xi,
                    Vector<double>                    *residual,
-                   FullMatrix<double>                *jacobian);
+                   FullMatrix<double>                *jacobian,
+                   const SlaveSection                *section = nullptr);
   } // namespace contact
 } // namespace pneuma

@@ -143,10 +143,15 @@ namespace pneuma
       struct PairData
       {
         double radius = 0., search = 0.;
-        /// Per cable cell: its 6 mid-line dofs.
-        std::vector<std::array<types::global_dof_index, 6>> cell_dofs;
-        /// Per cable cell: reference vertex positions.
+        /// Solid beam: the gap uses the current elliptic section.
+        bool beam = false;
+        /// Per cable cell: its mid-line dofs (vertex 0 xyz, vertex 1 xyz),
+        /// then for a solid beam a1, a2 of vertex 0 and of vertex 1.
+        std::vector<std::vector<types::global_dof_index>> cell_dofs;
+        /// Per cable cell: reference vertex positions, and the reference
+        /// values of its dofs.
         std::vector<std::array<Tensor<1, 3>, 2>> cell_reference;
+        std::vector<std::vector<double>>         cell_reference_values;
         std::vector<CablePoint>                   points;
         /// Per cable cell: candidate master cells (indices).
         std::vector<std::vector<unsigned int>> candidates;
