@@ -4,7 +4,9 @@
 #   1. cable element: the elastic V7 catenary (EA = 1e4 N, started
 #      stress-free as a V, the hanging shape found by Newton's pseudo-time
 #      continuation): error of the horizontal force H (4.685299 N);
-#   2. solid-beam element: cantilever under a tip force (small deflection):
+#   2. solid-beam element: the same catenary with a nearly vanishing
+#      bending stiffness (pinned ends), against the same reference;
+#   3. solid-beam element: cantilever under a tip force (small deflection):
 #      error of the tip deflection against P L^3/(3EI) + P L/(GA).
 # Usage: benchmarks/cables/run.sh   (from anywhere; builds if needed)
 set -euo pipefail
@@ -37,6 +39,28 @@ for n in 16 32 64 128 256; do
   H=$(array out/catenary start_reaction 0)
   printf "| %s | %s | %s | %s | %s | %.6f | %+.2e |\n" "$n" \
     "$(field out/catenary dofs)" "$(field out/catenary newton_iterations)" \
+    "$wall" "$mb" "$(awk -v h="$H" 'BEGIN{print -h}')" \
+    "$(awk -v h="$H" 'BEGIN{print (-h-4.685299)/4.685299}')"
+done
+echo
+echo "## Solid-beam element: the same catenary (a = 5e-5 m, EA = 1e4 N, EI = 6e-6 N m^2, pinned ends)"
+echo "| elements | dofs | Newton its | wall s | peak MB | H [N] | error |"
+echo "|---|---|---|---|---|---|---|"
+E_beam=$(awk 'BEGIN{pi=atan2(0,-1); print 1e4/(pi*5e-5*5e-5)}')
+for n in 16 32 64 128 256; do
+  read -r wall mb < <(measure "$root/parameter_files/catenary.prm" \
+    --set "Cables/Cable 1/Number of elements=$n" \
+    --set "Cables/Cable 1/Element=solid beam" \
+    --set "Cables/Cable 1/Poisson's ratio=0" \
+    --set "Cables/Cable 1/Section semi-axes=5e-5" \
+    --set "Cables/Cable 1/Young's modulus=$E_beam" \
+    --set "Cables/Cable 1/Start support=pinned" \
+    --set "Cables/Cable 1/End support=pinned" \
+    --set "Output/Directory=$here/out/catenary_beam" --set "Output/Write VTU=false" \
+    --set "Newton/Maximum iterations=100")
+  H=$(array out/catenary_beam start_reaction 0)
+  printf "| %s | %s | %s | %s | %s | %.6f | %+.2e |\n" "$n" \
+    "$(field out/catenary_beam dofs)" "$(field out/catenary_beam newton_iterations)" \
     "$wall" "$mb" "$(awk -v h="$H" 'BEGIN{print -h}')" \
     "$(awk -v h="$H" 'BEGIN{print (-h-4.685299)/4.685299}')"
 done
