@@ -30,13 +30,5 @@ namespace pneuma
                   (p.force / l) * (Tensor<2, 3>(unit_symmetric_tensor<3>()) - ee);
       return p;
     }
-
-    double
-    TensionOnlyCable::energy(const Tensor<1, 3> &dx_dS) const
-    {
-      const double lambda = rho * dx_dS.norm();
-      const double EA_eff = lambda >= 1. ? EA : slack * EA;
-      return 0.5 * EA_eff * (lambda - 1.) * (lambda - 1.) / rho;
-    }
   } // namespace cables
 } // namespace pneuma

@@ -26,11 +26,11 @@ namespace pneuma
       {
       }
 
-      const CableDefinition         &definition;
-      Triangulation<1, 3>            tria;
+      const CableDefinition          &definition;
+      Triangulation<1, 3>             tria;
       std::unique_ptr<FESystem<1, 3>> fe;
-      DoFHandler<1, 3>               dof_handler;
-      unsigned int                   n_components = 3;
+      DoFHandler<1, 3>                dof_handler;
+      unsigned int                    n_components = 3;
       /// Global index of local dof 0.
       types::global_dof_index offset = 0;
       /// Reference values of every local dof: position (components 0-2),
@@ -43,6 +43,34 @@ namespace pneuma
       Point<3>                             start_point, end_point;
       std::unique_ptr<TensionOnlyCable>    cable;
       std::unique_ptr<SolidBeamElement>    beam;
+      /// Reused for every cell: one Gauss point for the element terms
+      /// (exact for the constant strain of the cable, reduced for the
+      /// solid beam), two for the loads.
+      std::unique_ptr<FEValues<1, 3>> element_values, load_values;
+      /// The end moment at the current time (zero without one).
+      Tensor<1, 3>
+      end_moment() const
+      {
+        Tensor<1, 3> M;
+        if (definition.has_end_moment && !end_dofs.empty())
+          for (unsigned int c = 0; c < 3; ++c)
+            M[c] = definition.end_moment->value(end_point, c);
+        return M;
+      }
+      /// Reference (A) and current (a) semi-axis vectors of the end section.
+      void
+      end_section(const Vector<double>        &local_u,
+                  std::array<Tensor<1, 3>, 2> &A,
+                  std::array<Tensor<1, 3>, 2> &a) const
+      {
+        for (unsigned int k = 0; k < 2; ++k)
+          for (unsigned int c = 0; c < 3; ++c)
+            {
+              const auto i = end_dofs[3 + 3 * k + c];
+              A[k][c]      = reference[i];
+              a[k][c]      = A[k][c] + local_u[i];
+            }
+      }
       /// End-moment tracking: the end semi-axis vectors and their angles
       /// about the moment axis at the last converged step.
       std::array<Tensor<1, 3>, 2> moment_axes;
@@ -85,9 +113,8 @@ namespace pneuma
       v.dof_handler = &b.dof_handler;
       v.offset      = b.offset;
       v.reference   = &b.reference;
-      v.radius =
-        std::max(b.definition.section_a, b.definition.section_b);
-      v.solid_beam = static_cast<bool>(b.beam);
+      v.radius      = std::max(b.definition.section_a, b.definition.section_b);
+      v.solid_beam  = static_cast<bool>(b.beam);
       return v;
     }
 
@@ -140,9 +167,22 @@ namespace pneuma
           create_cable_mesh(d, b->tria);
           const bool beam = d.element == CableElement::solid_beam;
           b->n_components = beam ? 9 : 3;
-          b->fe = std::make_unique<FESystem<1, 3>>(FE_Q<1, 3>(1),
-                                                   b->n_components);
+          b->fe =
+            std::make_unique<FESystem<1, 3>>(FE_Q<1, 3>(1), b->n_components);
           b->dof_handler.distribute_dofs(*b->fe);
+          b->element_values =
+            std::make_unique<FEValues<1, 3>>(mapping(),
+                                             *b->fe,
+                                             QGauss<1>(1),
+                                             update_values | update_gradients
+                                               | update_JxW_values);
+          b->load_values =
+            std::make_unique<FEValues<1, 3>>(mapping(),
+                                             *b->fe,
+                                             QGauss<1>(2),
+                                             update_values
+                                               | update_quadrature_points
+                                               | update_JxW_values);
           b->offset = next;
           next += b->dof_handler.n_dofs();
 
@@ -182,8 +222,7 @@ namespace pneuma
                 Tensor<1, 3> t = node_tangent[cell->vertex_index(v)];
                 t /= t.norm();
                 Tensor<1, 3> e1 = d.section_axis;
-                if (d.shape == CableShape::ring ||
-                    d.shape == CableShape::helix)
+                if (d.shape == CableShape::ring || d.shape == CableShape::helix)
                   {
                     const Tensor<1, 3> a = d.axis / d.axis.norm();
                     e1                   = X - d.centre;
@@ -221,8 +260,8 @@ namespace pneuma
           if (ends.size() == 2)
             {
               const Point<3> first_vertex = b->tria.get_vertices()[0];
-              if (ends[1].first.distance(first_vertex) <
-                  ends[0].first.distance(first_vertex))
+              if (ends[1].first.distance(first_vertex)
+                  < ends[0].first.distance(first_vertex))
                 std::swap(ends[0], ends[1]);
               b->start_point = ends[0].first;
               b->start_dofs  = ends[0].second;
@@ -264,17 +303,18 @@ namespace pneuma
         return;
       for (const auto &b : bodies)
         {
-          const auto add = [&](const EndSupport                            s,
-                               const std::array<bool, 3>                  &held,
-                               const std::vector<types::global_dof_index> &dofs) {
-            if (s == EndSupport::free)
-              return;
-            const unsigned int n =
-              (s == EndSupport::fixed) ? b->n_components : 3;
-            for (unsigned int c = 0; c < n; ++c)
-              if (c >= 3 || held[c])
-                constraints.add_line(b->offset + dofs[c]);
-          };
+          const auto add =
+            [&](const EndSupport                            s,
+                const std::array<bool, 3>                  &held,
+                const std::vector<types::global_dof_index> &dofs) {
+              if (s == EndSupport::free)
+                return;
+              const unsigned int n =
+                (s == EndSupport::fixed) ? b->n_components : 3;
+              for (unsigned int c = 0; c < n; ++c)
+                if (c >= 3 || held[c])
+                  constraints.add_line(b->offset + dofs[c]);
+            };
           add(b->definition.start_support,
               b->definition.start_components,
               b->start_dofs);
@@ -285,26 +325,28 @@ namespace pneuma
     }
 
     void
-    CableSystem::set_prescribed_values(const double t, LA::Vector &solution) const
+    CableSystem::set_prescribed_values(const double t,
+                                       LA::Vector  &solution) const
     {
       if (is_owner)
         for (const auto &b : bodies)
           {
-            const auto set = [&](const EndSupport                            s,
-                                 const std::array<bool, 3>                  &held,
-                                 Functions::ParsedFunction<3>               &f,
-                                 const Point<3>                             &x,
-                                 const std::vector<types::global_dof_index> &dofs) {
-              if (s == EndSupport::free)
-                return;
-              f.set_time(t);
-              for (unsigned int c = 0; c < 3; ++c)
-                if (held[c])
-                  solution[b->offset + dofs[c]] = f.value(x, c);
-              if (s == EndSupport::fixed)
-                for (unsigned int c = 3; c < b->n_components; ++c)
-                  solution[b->offset + dofs[c]] = 0.;
-            };
+            const auto set =
+              [&](const EndSupport                            s,
+                  const std::array<bool, 3>                  &held,
+                  Functions::ParsedFunction<3>               &f,
+                  const Point<3>                             &x,
+                  const std::vector<types::global_dof_index> &dofs) {
+                if (s == EndSupport::free)
+                  return;
+                f.set_time(t);
+                for (unsigned int c = 0; c < 3; ++c)
+                  if (held[c])
+                    solution[b->offset + dofs[c]] = f.value(x, c);
+                if (s == EndSupport::fixed)
+                  for (unsigned int c = 3; c < b->n_components; ++c)
+                    solution[b->offset + dofs[c]] = 0.;
+              };
             set(b->definition.start_support,
                 b->definition.start_components,
                 *b->definition.start_displacement,
@@ -320,8 +362,9 @@ namespace pneuma
     }
 
     void
-    CableSystem::add_sparsity(DynamicSparsityPattern          &dsp,
-                              const AffineConstraints<double> &constraints) const
+    CableSystem::add_sparsity(
+      DynamicSparsityPattern          &dsp,
+      const AffineConstraints<double> &constraints) const
     {
       if (!is_owner)
         return;
@@ -357,9 +400,9 @@ namespace pneuma
                             Vector<double>      *cell_external,
                             std::vector<double> *cell_output) const
     {
-      const CableDefinition &d     = b.definition;
-      const FiniteElement<1, 3> &fe = *b.fe;
-      const unsigned int     n     = fe.n_dofs_per_cell();
+      const CableDefinition               &d  = b.definition;
+      const FiniteElement<1, 3>           &fe = *b.fe;
+      const unsigned int                   n  = fe.n_dofs_per_cell();
       std::vector<types::global_dof_index> dofs(n);
       cell->get_dof_indices(dofs);
       Vector<double> local_ref(n), local_u(n);
@@ -371,14 +414,10 @@ namespace pneuma
       const Tensor<1, 3> tangent = cell_tangent(cell);
 
       // Internal forces.
+      FEValues<1, 3> &fe_values = *b.element_values;
+      fe_values.reinit(cell);
       if (b.beam)
         {
-          FEValues<1, 3> fe_values(mapping(),
-                                   fe,
-                                   QGauss<1>(1),
-                                   update_values | update_gradients |
-                                     update_JxW_values);
-          fe_values.reinit(cell);
           b.beam->cell_terms(fe_values,
                              tangent,
                              local_ref,
@@ -390,11 +429,6 @@ namespace pneuma
       else
         {
           // Constant strain on a linear element: one point is exact.
-          FEValues<1, 3> fe_values(mapping(),
-                                   fe,
-                                   QGauss<1>(1),
-                                   update_gradients | update_JxW_values);
-          fe_values.reinit(cell);
           for (const unsigned int q : fe_values.quadrature_point_indices())
             {
               std::vector<double> g(n);
@@ -405,7 +439,7 @@ namespace pneuma
                   dx[fe.system_to_component_index(i).first] +=
                     (local_ref[i] + local_u[i]) * g[i];
                 }
-              const CablePoint p  = b.cable->evaluate(dx);
+              const CablePoint p   = b.cable->evaluate(dx);
               const double     JxW = fe_values.JxW(q);
               for (unsigned int i = 0; i < n; ++i)
                 {
@@ -415,9 +449,9 @@ namespace pneuma
                   if (cell_matrix)
                     for (unsigned int j = 0; j < n; ++j)
                       (*cell_matrix)(i, j) +=
-                        g[i] *
-                        p.tangent[ci][fe.system_to_component_index(j).first] *
-                        g[j] * JxW;
+                        g[i]
+                        * p.tangent[ci][fe.system_to_component_index(j).first]
+                        * g[j] * JxW;
                 }
               if (cell_output)
                 {
@@ -430,26 +464,23 @@ namespace pneuma
       // Dead loads per unstressed length: gravity on density * area, and the
       // distributed load. Mid-line dofs only.
       const bool gravity = loads.has_gravity() && d.density > 0.;
-      if ((gravity || d.has_distributed_load) &&
-          (cell_residual || cell_external))
+      if ((gravity || d.has_distributed_load)
+          && (cell_residual || cell_external))
         {
-          FEValues<1, 3> fe_values(mapping(),
-                                   fe,
-                                   QGauss<1>(2),
-                                   update_values | update_quadrature_points |
-                                     update_JxW_values);
-          fe_values.reinit(cell);
+          FEValues<1, 3> &load_values = *b.load_values;
+          load_values.reinit(cell);
           const Tensor<1, 3> g_vec = loads.gravity(t);
           d.distributed_load->set_time(t);
-          for (const unsigned int q : fe_values.quadrature_point_indices())
+          for (const unsigned int q : load_values.quadrature_point_indices())
             {
               Tensor<1, 3> w;
               if (gravity)
                 w += d.density * d.area() * g_vec;
               if (d.has_distributed_load)
                 for (unsigned int c = 0; c < 3; ++c)
-                  w[c] += d.distributed_load->value(
-                    fe_values.quadrature_point(q), c);
+                  w[c] +=
+                    d.distributed_load->value(load_values.quadrature_point(q),
+                                              c);
               // Per unstressed length -> per reference length.
               w /= b.rho;
               for (unsigned int i = 0; i < n; ++i)
@@ -457,8 +488,8 @@ namespace pneuma
                   const unsigned int ci = fe.system_to_component_index(i).first;
                   if (ci >= 3)
                     continue;
-                  const double f = fe_values.shape_value(i, q) * w[ci] *
-                                   fe_values.JxW(q);
+                  const double f =
+                    load_values.shape_value(i, q) * w[ci] * load_values.JxW(q);
                   if (cell_residual)
                     (*cell_residual)(i) -= f;
                   if (cell_external)
@@ -500,17 +531,12 @@ namespace pneuma
                 cell->get_dof_indices(dofs);
                 for (auto &i : dofs)
                   i += b->offset;
-                if (tangent && residual)
-                  constraints.distribute_local_to_global(
-                    cell_matrix, cell_residual, dofs, *tangent, *residual);
-                else if (tangent)
-                  constraints.distribute_local_to_global(cell_matrix,
-                                                         dofs,
-                                                         *tangent);
-                else if (residual)
-                  constraints.distribute_local_to_global(cell_residual,
-                                                         dofs,
-                                                         *residual);
+                LA::distribute(constraints,
+                               cell_matrix,
+                               cell_residual,
+                               dofs,
+                               tangent,
+                               residual);
                 if (external)
                   constraints.distribute_local_to_global(cell_external,
                                                          dofs,
@@ -546,50 +572,38 @@ namespace pneuma
                                                            fdofs,
                                                            *residual);
                 }
-            if (d.has_end_moment && !b->end_dofs.empty())
+            d.end_moment->set_time(t);
+            const Tensor<1, 3> M = b->end_moment();
+            if (M.norm() > 0.)
               {
-                d.end_moment->set_time(t);
-                Tensor<1, 3> M;
-                for (unsigned int c = 0; c < 3; ++c)
-                  M[c] = d.end_moment->value(b->end_point, c);
-                if (M.norm() > 0.)
+                std::array<Tensor<1, 3>, 2> A, a;
+                b->end_section(local_u, A, a);
+                FullMatrix<double> node_matrix(9, 9);
+                Vector<double>     node_residual(9), node_external(9);
+                SolidBeamElement::end_moment_terms(M,
+                                                   A,
+                                                   a,
+                                                   b->moment_axes,
+                                                   b->moment_angles,
+                                                   &node_matrix,
+                                                   &node_residual,
+                                                   nullptr);
+                std::vector<types::global_dof_index> mdofs(9);
+                for (unsigned int c = 0; c < 9; ++c)
+                  mdofs[c] = b->offset + b->end_dofs[c];
+                LA::distribute(constraints,
+                               node_matrix,
+                               node_residual,
+                               mdofs,
+                               tangent,
+                               residual);
+                if (external)
                   {
-                    std::array<Tensor<1, 3>, 2> A, a;
-                    for (unsigned int k = 0; k < 2; ++k)
-                      for (unsigned int c = 0; c < 3; ++c)
-                        {
-                          const auto i = b->end_dofs[3 + 3 * k + c];
-                          A[k][c]      = b->reference[i];
-                          a[k][c]      = A[k][c] + local_u[i];
-                        }
-                    FullMatrix<double> node_matrix(9, 9);
-                    Vector<double>     node_residual(9), node_external(9);
-                    SolidBeamElement::end_moment_terms(M,
-                                                       A,
-                                                       a,
-                                                       b->moment_axes,
-                                                       b->moment_angles,
-                                                       &node_matrix,
-                                                       &node_residual,
-                                                       nullptr);
-                    std::vector<types::global_dof_index> mdofs(9);
-                    for (unsigned int c = 0; c < 9; ++c)
-                      mdofs[c] = b->offset + b->end_dofs[c];
-                    if (tangent && residual)
-                      constraints.distribute_local_to_global(
-                        node_matrix, node_residual, mdofs, *tangent, *residual);
-                    else if (residual)
-                      constraints.distribute_local_to_global(node_residual,
-                                                             mdofs,
-                                                             *residual);
-                    if (external)
-                      {
-                        node_external = node_residual;
-                        node_external *= -1.;
-                        constraints.distribute_local_to_global(node_external,
-                                                               mdofs,
-                                                               *external);
-                      }
+                    node_external = node_residual;
+                    node_external *= -1.;
+                    constraints.distribute_local_to_global(node_external,
+                                                           mdofs,
+                                                           *external);
                   }
               }
           }
@@ -609,30 +623,33 @@ namespace pneuma
       if (is_owner)
         for (const auto &b : bodies)
           {
-            const FiniteElement<1, 3> &fe = *b->fe;
-            const unsigned int         n  = fe.n_dofs_per_cell();
-            FEValues<1, 3>             fe_values(mapping(),
+            const FiniteElement<1, 3>           &fe = *b->fe;
+            const unsigned int                   n  = fe.n_dofs_per_cell();
+            FEValues<1, 3>                       fe_values(mapping(),
                                      fe,
                                      QGauss<1>(1),
                                      update_gradients | update_JxW_values);
-            FullMatrix<double>         cell_matrix(n, n);
+            FullMatrix<double>                   cell_matrix(n, n);
             std::vector<types::global_dof_index> dofs(n);
             for (const auto &cell : b->dof_handler.active_cell_iterators())
               {
                 fe_values.reinit(cell);
                 cell_matrix = 0.;
-                for (const unsigned int q : fe_values.quadrature_point_indices())
+                for (const unsigned int q :
+                     fe_values.quadrature_point_indices())
                   for (unsigned int i = 0; i < n; ++i)
                     for (unsigned int j = 0; j < n; ++j)
-                      if (fe.system_to_component_index(i).first ==
-                          fe.system_to_component_index(j).first)
-                        cell_matrix(i, j) += fe_values.shape_grad(i, q) *
-                                             fe_values.shape_grad(j, q) *
-                                             fe_values.JxW(q);
+                      if (fe.system_to_component_index(i).first
+                          == fe.system_to_component_index(j).first)
+                        cell_matrix(i, j) += fe_values.shape_grad(i, q)
+                                             * fe_values.shape_grad(j, q)
+                                             * fe_values.JxW(q);
                 cell->get_dof_indices(dofs);
                 for (auto &i : dofs)
                   i += b->offset;
-                constraints.distribute_local_to_global(cell_matrix, dofs, matrix);
+                constraints.distribute_local_to_global(cell_matrix,
+                                                       dofs,
+                                                       matrix);
               }
           }
       matrix.compress(VectorOperation::add);
@@ -657,36 +674,25 @@ namespace pneuma
       if (!is_owner)
         return;
       for (auto &b : bodies)
-        if (b->definition.has_end_moment && !b->end_dofs.empty())
-          {
-            const Vector<double>        local_u = extract(*b, u);
-            std::array<Tensor<1, 3>, 2> A, a;
-            for (unsigned int k = 0; k < 2; ++k)
-              for (unsigned int c = 0; c < 3; ++c)
-                {
-                  const auto i = b->end_dofs[3 + 3 * k + c];
-                  A[k][c]      = b->reference[i];
-                  a[k][c]      = A[k][c] + local_u[i];
-                }
-            Tensor<1, 3> M;
-            for (unsigned int c = 0; c < 3; ++c)
-              M[c] = b->definition.end_moment->value(b->end_point, c);
-            if (M.norm() == 0.)
-              continue;
-            std::array<double, 2> theta{{0., 0.}};
-            SolidBeamElement::end_moment_terms(M,
-                                               A,
-                                               a,
-                                               b->moment_axes,
-                                               b->moment_angles,
-                                               nullptr,
-                                               nullptr,
-                                               &theta);
-            b->moment_axes   = a;
-            b->moment_angles = theta;
-            b->section_rotation =
-              SolidBeamElement::section_rotation(M, A, theta);
-          }
+        {
+          const Tensor<1, 3> M = b->end_moment();
+          if (M.norm() == 0.)
+            continue;
+          std::array<Tensor<1, 3>, 2> A, a;
+          b->end_section(extract(*b, u), A, a);
+          std::array<double, 2> theta{{0., 0.}};
+          SolidBeamElement::end_moment_terms(M,
+                                             A,
+                                             a,
+                                             b->moment_axes,
+                                             b->moment_angles,
+                                             nullptr,
+                                             nullptr,
+                                             &theta);
+          b->moment_axes      = a;
+          b->moment_angles    = theta;
+          b->section_rotation = SolidBeamElement::section_rotation(M, A, theta);
+        }
     }
 
     std::vector<CableReport>
@@ -697,12 +703,12 @@ namespace pneuma
         return result;
       for (const auto &b : bodies)
         {
-          CableReport          r;
-          const Vector<double> local_u = extract(*b, u);
-          const unsigned int   n       = b->fe->n_dofs_per_cell();
-          Vector<double>       nodal(b->dof_handler.n_dofs());
-          Vector<double>       cell_residual(n);
-          std::vector<double>  out(b->beam ? 6 : 2, 0.);
+          CableReport                          r;
+          const Vector<double>                 local_u = extract(*b, u);
+          const unsigned int                   n = b->fe->n_dofs_per_cell();
+          Vector<double>                       nodal(b->dof_handler.n_dofs());
+          Vector<double>                       cell_residual(n);
+          std::vector<double>                  out(b->beam ? 6 : 2, 0.);
           std::vector<types::global_dof_index> dofs(n);
           r.max_force = -std::numeric_limits<double>::max();
           r.min_force = std::numeric_limits<double>::max();
@@ -718,15 +724,15 @@ namespace pneuma
               r.min_force = std::min(r.min_force, out[0]);
               if (b->beam)
                 {
-                  r.max_bending = std::max(r.max_bending,
-                                           std::hypot(out[1], out[2]));
+                  r.max_bending =
+                    std::max(r.max_bending, std::hypot(out[1], out[2]));
                   r.max_torsion = std::max(r.max_torsion, std::abs(out[3]));
                 }
               Tensor<1, 3> chord;
               for (unsigned int c = 0; c < 3; ++c)
-                chord[c] = cell->vertex(1)[c] - cell->vertex(0)[c] +
-                           local_u[cell->vertex_dof_index(1, c)] -
-                           local_u[cell->vertex_dof_index(0, c)];
+                chord[c] = cell->vertex(1)[c] - cell->vertex(0)[c]
+                           + local_u[cell->vertex_dof_index(1, c)]
+                           - local_u[cell->vertex_dof_index(0, c)];
               r.length += chord.norm();
             }
           // Dead end forces belong to the applied loads, not the reaction.
@@ -735,21 +741,21 @@ namespace pneuma
             {
               if (!b->start_dofs.empty())
                 {
-                  r.start_reaction[c] = nodal[b->start_dofs[c]];
-                  r.end_reaction[c]   = nodal[b->end_dofs[c]];
+                  r.start_reaction[c]     = nodal[b->start_dofs[c]];
+                  r.end_reaction[c]       = nodal[b->end_dofs[c]];
                   r.start_displacement[c] = local_u[b->start_dofs[c]];
                   r.end_displacement[c]   = local_u[b->end_dofs[c]];
                   if (d.has_end_forces)
                     {
-                      r.start_reaction[c] -= d.start_force->value(b->start_point, c);
+                      r.start_reaction[c] -=
+                        d.start_force->value(b->start_point, c);
                       r.end_reaction[c] -= d.end_force->value(b->end_point, c);
                     }
                   // Only held components have a reaction.
-                  if (d.start_support == EndSupport::free ||
-                      !d.start_components[c])
+                  if (d.start_support == EndSupport::free
+                      || !d.start_components[c])
                     r.start_reaction[c] = 0.;
-                  if (d.end_support == EndSupport::free ||
-                      !d.end_components[c])
+                  if (d.end_support == EndSupport::free || !d.end_components[c])
                     r.end_reaction[c] = 0.;
                 }
               r.mid_displacement[c] = local_u[b->mid_dofs[c]];
@@ -779,14 +785,14 @@ namespace pneuma
               3, DataComponentInterpretation::component_is_part_of_vector);
           for (unsigned int c = 3; c < b.n_components; ++c)
             {
-              names.push_back(c < 6 ? "section_axis_1_change" :
-                                      "section_axis_2_change");
+              names.push_back(c < 6 ? "section_axis_1_change"
+                                    : "section_axis_2_change");
               interpretation.push_back(
                 DataComponentInterpretation::component_is_part_of_vector);
             }
           const std::vector<std::string> field_names =
-            b.beam ? SolidBeamElement::output_names() :
-                     std::vector<std::string>{"axial_force", "stretch"};
+            b.beam ? SolidBeamElement::output_names()
+                   : std::vector<std::string>{"axial_force", "stretch"};
           std::vector<Vector<double>> fields(
             field_names.size(), Vector<double>(b.tria.n_active_cells()));
           std::vector<double> out(field_names.size(), 0.);
@@ -814,8 +820,8 @@ namespace pneuma
                                        name,
                                        DataOut<1, 3>::type_cell_data);
           data_out.build_patches();
-          const std::string name = "cables_" + std::to_string(k + 1) + "_" +
-                                   Utilities::int_to_string(step, 4) + ".vtu";
+          const std::string name = "cables_" + std::to_string(k + 1) + "_"
+                                   + Utilities::int_to_string(step, 4) + ".vtu";
           std::ofstream file(directory + "/" + name);
           data_out.write_vtu(file);
           pvd_records.emplace_back(t, name);
@@ -825,9 +831,9 @@ namespace pneuma
       pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
              "version=\"0.1\">\n<Collection>\n";
       for (unsigned int r = 0; r < pvd_records.size(); ++r)
-        pvd << "  <DataSet timestep=\"" << pvd_records[r].first
-            << "\" part=\"" << r % bodies.size() << "\" file=\""
-            << pvd_records[r].second << "\"/>\n";
+        pvd << "  <DataSet timestep=\"" << pvd_records[r].first << "\" part=\""
+            << r % bodies.size() << "\" file=\"" << pvd_records[r].second
+            << "\"/>\n";
       pvd << "</Collection>\n</VTKFile>\n";
     }
   } // namespace cables

@@ -3,7 +3,7 @@
 #include <pneuma/contact/contact_point.h>
 
 #ifndef DEAL_II_TRILINOS_WITH_SACADO
-#  error "pneuma's contact needs deal.II with Trilinos Sacado"
+#error "pneuma's contact needs deal.II with Trilinos Sacado"
 #endif
 
 #include <Sacado.hpp>
@@ -144,7 +144,7 @@ namespace pneuma
                        d[0][0] * d[1][1] - d[0][1] * d[1][0]};
         using std::sqrt;
         const Number length = sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
-        Number g = 0.;
+        Number       g      = 0.;
         for (unsigned int c = 0; c < 3; ++c)
           {
             normal[c] = sign * m[c] / length;
@@ -161,6 +161,32 @@ namespace pneuma
         return g - sqrt(p1 * p1 + p2 * p2);
       }
     } // namespace
+
+    Tensor<1, 3>
+    position(const MasterPatch &patch, const Point<2> &xi)
+    {
+      double l1[3], dl1[3], ddl1[3], l2[3], dl2[3], ddl2[3];
+      lagrange(patch.degree, xi[0], l1, dl1, ddl1);
+      lagrange(patch.degree, xi[1], l2, dl2, ddl2);
+      const unsigned int k = patch.degree + 1;
+      Tensor<1, 3>       rho;
+      for (unsigned int a = 0; a < patch.nodes.size(); ++a)
+        rho += l1[a % k] * l2[a / k] * patch.nodes[a];
+      return rho;
+    }
+
+    std::pair<Tensor<1, 3>, Tensor<1, 3>>
+    bounding_box(const MasterPatch &patch)
+    {
+      std::pair<Tensor<1, 3>, Tensor<1, 3>> box(patch.nodes[0], patch.nodes[0]);
+      for (const auto &y : patch.nodes)
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            box.first[c]  = std::min(box.first[c], y[c]);
+            box.second[c] = std::max(box.second[c], y[c]);
+          }
+      return box;
+    }
 
     Projection
     project(const MasterPatch  &patch,
@@ -193,15 +219,15 @@ namespace pneuma
         }
       const double tolerance = 1e-9;
       p.xi                   = Point<2>(xi[0], xi[1]);
-      p.inside = converged && xi[0] >= -tolerance && xi[0] <= 1. + tolerance &&
-                 xi[1] >= -tolerance && xi[1] <= 1. + tolerance;
+      p.inside = converged && xi[0] >= -tolerance && xi[0] <= 1. + tolerance
+                 && xi[1] >= -tolerance && xi[1] <= 1. + tolerance;
       double normal[3];
       p.gap = gap(patch.degree, y, xs, xi, patch.sign, radius, normal);
       double rho[3], d[2][3], dd[2][2][3];
       surface(patch.degree, y, xi, rho, d, dd);
-      p.distance = std::sqrt((xs[0] - rho[0]) * (xs[0] - rho[0]) +
-                             (xs[1] - rho[1]) * (xs[1] - rho[1]) +
-                             (xs[2] - rho[2]) * (xs[2] - rho[2]));
+      p.distance = std::sqrt((xs[0] - rho[0]) * (xs[0] - rho[0])
+                             + (xs[1] - rho[1]) * (xs[1] - rho[1])
+                             + (xs[2] - rho[2]) * (xs[2] - rho[2]));
       for (unsigned int c = 0; c < 3; ++c)
         p.normal[c] = normal[c];
       return p;
@@ -235,8 +261,8 @@ namespace pneuma
         const unsigned int n_m = patch.nodes.size();
         AD                 x[3];
         for (unsigned int c = 0; c < 3; ++c)
-          x[c] = (1. - eta) * AD(n, c, slave[0][c]) +
-                 eta * AD(n, 3 + c, slave[1][c]);
+          x[c] = (1. - eta) * AD(n, c, slave[0][c])
+                 + eta * AD(n, 3 + c, slave[1][c]);
         std::vector<std::array<AD, 3>> y(n_m);
         for (unsigned int a = 0; a < n_m; ++a)
           for (unsigned int c = 0; c < 3; ++c)
@@ -253,7 +279,7 @@ namespace pneuma
         if (g.val() >= 0.)
           return 0.;
         // phi_a(xi) in lattice order.
-        AD                 l1[3], dl1[3], ddl1[3], l2[3], dl2[3], ddl2[3];
+        AD l1[3], dl1[3], ddl1[3], l2[3], dl2[3], ddl2[3];
         lagrange(patch.degree, xi[0], l1, dl1, ddl1);
         lagrange(patch.degree, xi[1], l2, dl2, ddl2);
         const unsigned int k = patch.degree + 1;
@@ -304,21 +330,21 @@ namespace pneuma
                             Vector<double>                    *gradient,
                             FullMatrix<double>                *hessian)
       {
-        using AD1              = Sacado::Fad::SFad<double, n>;
-        using AD2              = Sacado::Fad::SFad<AD1, n>;
-        const unsigned int n_m = patch.nodes.size();
-        const auto variable = [](const unsigned int k, const double v) {
+        using AD1                   = Sacado::Fad::SFad<double, n>;
+        using AD2                   = Sacado::Fad::SFad<AD1, n>;
+        const unsigned int n_m      = patch.nodes.size();
+        const auto         variable = [](const unsigned int k, const double v) {
           return AD2(n, k, AD1(n, k, v));
         };
         AD2 x[3], a1[3], a2[3];
         for (unsigned int c = 0; c < 3; ++c)
           {
-            x[c]  = (1. - eta) * variable(c, slave[0][c]) +
-                   eta * variable(3 + c, slave[1][c]);
-            a1[c] = (1. - eta) * variable(6 + c, section.a1[0][c]) +
-                    eta * variable(12 + c, section.a1[1][c]);
-            a2[c] = (1. - eta) * variable(9 + c, section.a2[0][c]) +
-                    eta * variable(15 + c, section.a2[1][c]);
+            x[c] = (1. - eta) * variable(c, slave[0][c])
+                   + eta * variable(3 + c, slave[1][c]);
+            a1[c] = (1. - eta) * variable(6 + c, section.a1[0][c])
+                    + eta * variable(12 + c, section.a1[1][c]);
+            a2[c] = (1. - eta) * variable(9 + c, section.a2[0][c])
+                    + eta * variable(15 + c, section.a2[1][c]);
           }
         std::vector<std::array<AD2, 3>> y(n_m);
         for (unsigned int a = 0; a < n_m; ++a)
@@ -328,7 +354,8 @@ namespace pneuma
         newton_step(patch.degree, y, x, xi);
         newton_step(patch.degree, y, x, xi);
         AD2       normal[3];
-        const AD2 g = gap(patch.degree, y, x, xi, patch.sign, 0., normal, a1, a2);
+        const AD2 g =
+          gap(patch.degree, y, x, xi, patch.sign, 0., normal, a1, a2);
         if (gradient)
           gradient->reinit(n);
         if (hessian)
@@ -366,13 +393,24 @@ namespace pneuma
                   const SlaveSection                *section)
     {
       if (section)
-        return patch.degree == 1 ?
-                 penalty_terms_section<30>(patch, *section, slave, eta,
-                                           penalty, weight, xi, gradient,
-                                           hessian) :
-                 penalty_terms_section<45>(patch, *section, slave, eta,
-                                           penalty, weight, xi, gradient,
-                                           hessian);
+        return patch.degree == 1 ? penalty_terms_section<30>(patch,
+                                                             *section,
+                                                             slave,
+                                                             eta,
+                                                             penalty,
+                                                             weight,
+                                                             xi,
+                                                             gradient,
+                                                             hessian)
+                                 : penalty_terms_section<45>(patch,
+                                                             *section,
+                                                             slave,
+                                                             eta,
+                                                             penalty,
+                                                             weight,
+                                                             xi,
+                                                             gradient,
+                                                             hessian);
       if (patch.degree == 1)
         return penalty_terms_envelope<18>(
           patch, slave, eta, radius, penalty, weight, xi, gradient, hessian);
@@ -397,33 +435,40 @@ namespace pneuma
                      Vector<double>                    *residual,
                      FullMatrix<double>                *jacobian)
       {
-        using AD               = Sacado::Fad::SFad<double, n>;
-        const unsigned int n_m = patch.nodes.size();
-        const unsigned int m0  = section ? 18 : 6; // first master variable
+        using AD                  = Sacado::Fad::SFad<double, n>;
+        const unsigned int n_m    = patch.nodes.size();
+        const unsigned int m0     = section ? 18 : 6; // first master variable
         const unsigned int n_used = m0 + 3 * n_m;
         AD                 x[3], a1[3], a2[3];
         for (unsigned int c = 0; c < 3; ++c)
-          x[c] = (1. - eta) * AD(n, c, slave[0][c]) +
-                 eta * AD(n, 3 + c, slave[1][c]);
+          x[c] = (1. - eta) * AD(n, c, slave[0][c])
+                 + eta * AD(n, 3 + c, slave[1][c]);
         if (section)
           for (unsigned int c = 0; c < 3; ++c)
             {
-              a1[c] = (1. - eta) * AD(n, 6 + c, section->a1[0][c]) +
-                      eta * AD(n, 12 + c, section->a1[1][c]);
-              a2[c] = (1. - eta) * AD(n, 9 + c, section->a2[0][c]) +
-                      eta * AD(n, 15 + c, section->a2[1][c]);
+              a1[c] = (1. - eta) * AD(n, 6 + c, section->a1[0][c])
+                      + eta * AD(n, 12 + c, section->a1[1][c]);
+              a2[c] = (1. - eta) * AD(n, 9 + c, section->a2[0][c])
+                      + eta * AD(n, 15 + c, section->a2[1][c]);
             }
         std::vector<std::array<AD, 3>> y(n_m);
         for (unsigned int a = 0; a < n_m; ++a)
           for (unsigned int c = 0; c < 3; ++c)
             y[a][c] = AD(n, m0 + 3 * a + c, patch.nodes[a][c]);
-        const auto &z = y;
-        AD xi[2] = {AD(xi_converged[0]), AD(xi_converged[1])};
+        const auto &z     = y;
+        AD          xi[2] = {AD(xi_converged[0]), AD(xi_converged[1])};
         newton_step(patch.degree, y, x, xi);
         newton_step(patch.degree, y, x, xi);
-        AD       normal[3];
-        const AD g = gap(patch.degree, y, x, xi, patch.sign, radius, normal,
-                         section ? a1 : nullptr, section ? a2 : nullptr);
+        AD            normal[3];
+        const AD      g = gap(patch.degree,
+                         y,
+                         x,
+                         xi,
+                         patch.sign,
+                         radius,
+                         normal,
+                         section ? a1 : nullptr,
+                         section ? a2 : nullptr);
         FrictionState state;
         if (residual)
           residual->reinit(n_used);
@@ -436,7 +481,7 @@ namespace pneuma
         AD l1[3], dl1[3], ddl1[3], l2[3], dl2[3], ddl2[3];
         lagrange(patch.degree, AD(xi_anchor[0]), l1, dl1, ddl1);
         lagrange(patch.degree, AD(xi_anchor[1]), l2, dl2, ddl2);
-        const unsigned int k = patch.degree + 1;
+        const unsigned int k     = patch.degree + 1;
         AD                 ya[3] = {0., 0., 0.};
         for (unsigned int a = 0; a < n_m; ++a)
           for (unsigned int c = 0; c < 3; ++c)
@@ -483,15 +528,8 @@ namespace pneuma
                 (*jacobian)(i, j) = r[i].dx(j);
           }
         // State for the update of the anchor.
-        Tensor<1, 3> rho;
-        {
-          double v1[3], dv1[3], ddv1[3], v2[3], dv2[3], ddv2[3];
-          lagrange(patch.degree, xi[0].val(), v1, dv1, ddv1);
-          lagrange(patch.degree, xi[1].val(), v2, dv2, ddv2);
-          for (unsigned int a = 0; a < n_m; ++a)
-            for (unsigned int c = 0; c < 3; ++c)
-              rho[c] += v1[a % k] * v2[a / k] * patch.nodes[a][c];
-        }
+        const Tensor<1, 3> rho =
+          position(patch, Point<2>(xi[0].val(), xi[1].val()));
         for (unsigned int c = 0; c < 3; ++c)
           {
             state.traction[c]      = t[c].val();
@@ -519,9 +557,20 @@ namespace pneuma
                    FullMatrix<double>                *jacobian,
                    const SlaveSection                *section)
     {
-#define PNEUMA_FRICTION(n)                                                    \
-  friction_sized<n>(patch, section, xi_anchor, slave, eta, radius, penalty,   \
-                    tangential_penalty, mu, weight, xi, residual, jacobian)
+#define PNEUMA_FRICTION(n)              \
+  friction_sized<n>(patch,              \
+                    section,            \
+                    xi_anchor,          \
+                    slave,              \
+                    eta,                \
+                    radius,             \
+                    penalty,            \
+                    tangential_penalty, \
+                    mu,                 \
+                    weight,             \
+                    xi,                 \
+                    residual,           \
+                    jacobian)
       if (patch.degree == 1)
         return section ? PNEUMA_FRICTION(30) : PNEUMA_FRICTION(18);
       return section ? PNEUMA_FRICTION(45) : PNEUMA_FRICTION(33);

@@ -45,8 +45,8 @@ namespace pneuma
         }
       std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
       for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned() &&
-            (all_regions || regions.count(cell->material_id())))
+        if (cell->is_locally_owned()
+            && (all_regions || regions.count(cell->material_id())))
           {
             MasterCell m;
             m.cell     = cell;
@@ -58,8 +58,8 @@ namespace pneuma
               {
                 const auto [c, base] = fe.system_to_component_index(k);
                 const Point<2> xi = fe.base_element(0).unit_support_point(base);
-                const unsigned int a = std::lround(xi[0] * degree) +
-                                       n * std::lround(xi[1] * degree);
+                const unsigned int a =
+                  std::lround(xi[0] * degree) + n * std::lround(xi[1] * degree);
                 m.dofs[3 * a + c] = cell_dofs[k];
               }
             for (unsigned int j = 0; j < n; ++j)
@@ -67,16 +67,18 @@ namespace pneuma
                 m.reference[i + n * j] = mapping.transform_unit_to_real_cell(
                   cell, Point<2>(double(i) / degree, double(j) / degree));
             // Outward sign and area of the patch at its centre.
-            const Point<3> x = mapping.transform_unit_to_real_cell(
-              cell, Point<2>(0.5, 0.5));
+            const Point<3> x =
+              mapping.transform_unit_to_real_cell(cell, Point<2>(0.5, 0.5));
             // rho_1 x rho_2 at the centre from the lattice.
             Tensor<1, 3> d1, d2;
             if (degree == 1)
               {
-                d1 = 0.5 * (m.reference[1] - m.reference[0] + m.reference[3] -
-                            m.reference[2]);
-                d2 = 0.5 * (m.reference[2] - m.reference[0] + m.reference[3] -
-                            m.reference[1]);
+                d1 = 0.5
+                     * (m.reference[1] - m.reference[0] + m.reference[3]
+                        - m.reference[2]);
+                d2 = 0.5
+                     * (m.reference[2] - m.reference[0] + m.reference[3]
+                        - m.reference[1]);
               }
             else
               {
@@ -84,24 +86,23 @@ namespace pneuma
                 d2 = m.reference[7] - m.reference[1];
               }
             const Tensor<1, 3> normal = cross_product_3d(d1, d2);
-            m.outward = geometry.orientation(x, normal);
-            m.area    = normal.norm();
+            m.outward                 = geometry.orientation(x, normal);
+            m.area                    = normal.norm();
             masters.push_back(m);
           }
 
       // Cable points.
       for (const auto &p : parameters.all())
         {
-          PairData                     d;
-          const cables::CableView      v = cables.view(p.cable);
-          const QGauss<1>              gauss(p.points_per_element);
-          const QGaussLobatto<1>       lobatto(std::max(2u, p.points_per_element));
-          const Quadrature<1>         &rule = p.lobatto ?
-                                                static_cast<const Quadrature<1> &>(lobatto) :
-                                                gauss;
+          PairData                d;
+          const cables::CableView v = cables.view(p.cable);
+          const QGauss<1>         gauss(p.points_per_element);
+          const QGaussLobatto<1>  lobatto(std::max(2u, p.points_per_element));
+          const Quadrature<1>    &rule =
+            p.lobatto ? static_cast<const Quadrature<1> &>(lobatto) : gauss;
           unsigned int index = 0;
           double       h_max = 0.;
-          d.beam = v.solid_beam && p.radius == 0.;
+          d.beam             = v.solid_beam && p.radius == 0.;
           for (const auto &cell : v.dof_handler->active_cell_iterators())
             {
               std::vector<types::global_dof_index> dofs(d.beam ? 18 : 6);
@@ -160,7 +161,6 @@ namespace pneuma
 
     MasterPatch
     ContactSystem::patch(const MasterCell &m,
-                         const PairData   &,
                          const bool        outside,
                          const LA::Vector *u) const
     {
@@ -192,15 +192,7 @@ namespace pneuma
             {
               if (!p.regions.empty() && !p.regions.count(masters[m].material))
                 continue;
-              const MasterPatch patch_m = patch(masters[m], d, p.outside, u);
-              Tensor<1, 3>      lo = patch_m.nodes[0], hi = patch_m.nodes[0];
-              for (const auto &y : patch_m.nodes)
-                for (unsigned int c = 0; c < 3; ++c)
-                  {
-                    lo[c] = std::min(lo[c], y[c]);
-                    hi[c] = std::max(hi[c], y[c]);
-                  }
-              boxes.emplace_back(lo, hi);
+              boxes.push_back(bounding_box(patch(masters[m], p.outside, u)));
               ids.push_back(m);
             }
           const double reach = d.radius + d.search;
@@ -217,12 +209,15 @@ namespace pneuma
                   bool overlap = true;
                   for (unsigned int i = 0; i < 3 && overlap; ++i)
                     overlap =
-                      std::min(x[0][i], x[1][i]) - reach <= boxes[b].second[i] &&
-                      std::max(x[0][i], x[1][i]) + reach >= boxes[b].first[i];
+                      std::min(x[0][i], x[1][i]) - reach <= boxes[b].second[i]
+                      && std::max(x[0][i], x[1][i]) + reach
+                           >= boxes[b].first[i];
                   if (overlap)
                     {
                       found.push_back(ids[b]);
-                      if (coupled.insert(std::array<unsigned int, 3>{{k, c, ids[b]}}).second)
+                      if (coupled
+                            .insert(std::array<unsigned int, 3>{{k, c, ids[b]}})
+                            .second)
                         grown = true;
                     }
                 }
@@ -233,14 +228,18 @@ namespace pneuma
     }
 
     void
-    ContactSystem::add_sparsity(DynamicSparsityPattern          &dsp,
-                                const AffineConstraints<double> &constraints) const
+    ContactSystem::add_sparsity(
+      DynamicSparsityPattern          &dsp,
+      const AffineConstraints<double> &constraints) const
     {
       std::vector<types::global_dof_index> dofs;
       for (const auto &[k, c, m] : coupled)
         {
-          dofs.assign(pairs[k].cell_dofs[c].begin(), pairs[k].cell_dofs[c].end());
-          dofs.insert(dofs.end(), masters[m].dofs.begin(), masters[m].dofs.end());
+          dofs.assign(pairs[k].cell_dofs[c].begin(),
+                      pairs[k].cell_dofs[c].end());
+          dofs.insert(dofs.end(),
+                      masters[m].dofs.begin(),
+                      masters[m].dofs.end());
           constraints.add_entries_local_to_global(dofs, dsp, false);
         }
     }
@@ -255,8 +254,8 @@ namespace pneuma
       const int rank = Utilities::MPI::this_mpi_process(comm);
       for (unsigned int k = 0; k < pairs.size(); ++k)
         {
-          PairData          &d = pairs[k];
-          const ContactPair &p = parameters.all()[k];
+          PairData          &d        = pairs[k];
+          const ContactPair &p        = parameters.all()[k];
           const unsigned int n_points = d.points.size();
           // Nearest projection inside a candidate cell, per point, here.
           struct Best
@@ -264,16 +263,16 @@ namespace pneuma
             double distance;
             int    rank;
           };
-          std::vector<Best>         best(n_points,
+          std::vector<Best>                        best(n_points,
                                  {std::numeric_limits<double>::max(), rank});
-          std::vector<unsigned int> best_master(n_points, 0);
-          std::vector<Point<2>>     best_xi(n_points);
+          std::vector<unsigned int>                best_master(n_points, 0);
+          std::vector<Projection>                  best_projection(n_points);
           std::vector<std::array<Tensor<1, 3>, 2>> slave(d.cell_dofs.size());
           for (unsigned int c = 0; c < d.cell_dofs.size(); ++c)
             for (unsigned int v = 0; v < 2; ++v)
               for (unsigned int i = 0; i < 3; ++i)
-                slave[c][v][i] = d.cell_reference[c][v][i] +
-                                 u[d.cell_dofs[c][3 * v + i]];
+                slave[c][v][i] =
+                  d.cell_reference[c][v][i] + u[d.cell_dofs[c][3 * v + i]];
           // Solid beam: the current section at the element's nodes.
           std::vector<SlaveSection> sections(d.beam ? d.cell_dofs.size() : 0);
           for (unsigned int c = 0; c < sections.size(); ++c)
@@ -281,36 +280,34 @@ namespace pneuma
               for (unsigned int i = 0; i < 3; ++i)
                 {
                   const unsigned int j1 = 6 + 6 * v + i, j2 = j1 + 3;
-                  sections[c].a1[v][i] = d.cell_reference_values[c][j1] +
-                                         u[d.cell_dofs[c][j1]];
-                  sections[c].a2[v][i] = d.cell_reference_values[c][j2] +
-                                         u[d.cell_dofs[c][j2]];
+                  sections[c].a1[v][i] =
+                    d.cell_reference_values[c][j1] + u[d.cell_dofs[c][j1]];
+                  sections[c].a2[v][i] =
+                    d.cell_reference_values[c][j2] + u[d.cell_dofs[c][j2]];
                 }
+          // Current patches (and boxes) of the masters, made when first used.
           std::vector<MasterPatch> patches(masters.size());
           std::vector<bool>        have_patch(masters.size(), false);
           std::vector<std::pair<Tensor<1, 3>, Tensor<1, 3>>> boxes(
             masters.size());
+          const auto current =
+            [&](const unsigned int m) -> const MasterPatch & {
+            if (!have_patch[m])
+              {
+                patches[m]    = patch(masters[m], p.outside, &u);
+                boxes[m]      = bounding_box(patches[m]);
+                have_patch[m] = true;
+              }
+            return patches[m];
+          };
           for (unsigned int q = 0; q < n_points; ++q)
             {
               const CablePoint  &pt = d.points[q];
-              const Tensor<1, 3> x  = (1. - pt.eta) * slave[pt.cable_cell][0] +
-                                     pt.eta * slave[pt.cable_cell][1];
+              const Tensor<1, 3> x  = (1. - pt.eta) * slave[pt.cable_cell][0]
+                                     + pt.eta * slave[pt.cable_cell][1];
               for (const unsigned int m : d.candidates[pt.cable_cell])
                 {
-                  if (!have_patch[m])
-                    {
-                      patches[m]    = patch(masters[m], d, p.outside, &u);
-                      have_patch[m] = true;
-                      // Current box of the cell, for the cheap test below.
-                      boxes[m].first = boxes[m].second = patches[m].nodes[0];
-                      for (const auto &y : patches[m].nodes)
-                        for (unsigned int i = 0; i < 3; ++i)
-                          {
-                            boxes[m].first[i] = std::min(boxes[m].first[i], y[i]);
-                            boxes[m].second[i] =
-                              std::max(boxes[m].second[i], y[i]);
-                          }
-                    }
+                  const MasterPatch &patch_m = current(m);
                   // A point farther than R from the cell's box (plus the
                   // bulge of a curved cell, bounded by its box size) cannot
                   // touch it.
@@ -318,18 +315,19 @@ namespace pneuma
                   for (unsigned int i = 0; i < 3 && near; ++i)
                     {
                       const double margin =
-                        d.radius + 0.25 * (boxes[m].second[i] - boxes[m].first[i]);
-                      near = x[i] >= boxes[m].first[i] - margin &&
-                             x[i] <= boxes[m].second[i] + margin;
+                        d.radius
+                        + 0.25 * (boxes[m].second[i] - boxes[m].first[i]);
+                      near = x[i] >= boxes[m].first[i] - margin
+                             && x[i] <= boxes[m].second[i] + margin;
                     }
                   if (!near)
                     continue;
-                  const Projection proj = project(patches[m], x, d.radius);
+                  const Projection proj = project(patch_m, x, d.radius);
                   if (proj.inside && proj.distance < best[q].distance)
                     {
-                      best[q].distance = proj.distance;
-                      best_master[q]   = m;
-                      best_xi[q]       = proj.xi;
+                      best[q].distance   = proj.distance;
+                      best_master[q]     = m;
+                      best_projection[q] = proj;
                     }
                 }
             }
@@ -346,25 +344,20 @@ namespace pneuma
           report.points = n_points;
           std::fill(d.line_load.begin(), d.line_load.end(), 0.);
           std::fill(d.pending_anchor.begin(), d.pending_anchor.end(), -1);
-          Vector<double>     f_residual;
-          FullMatrix<double> f_jacobian;
+          Vector<double>                       f_residual;
+          FullMatrix<double>                   f_jacobian;
           Vector<double>                       gradient;
           FullMatrix<double>                   hessian;
           std::vector<types::global_dof_index> dofs;
           for (unsigned int q = 0; q < n_points; ++q)
             {
-              if (global[q].rank != rank ||
-                  best[q].distance == std::numeric_limits<double>::max())
+              if (global[q].rank != rank
+                  || best[q].distance == std::numeric_limits<double>::max())
                 continue;
-              const CablePoint  &pt = d.points[q];
-              const unsigned int m  = best_master[q];
-              const Projection   proj =
-                project(patches[m],
-                        (1. - pt.eta) * slave[pt.cable_cell][0] +
-                          pt.eta * slave[pt.cable_cell][1],
-                        d.radius,
-                        best_xi[q]);
-              double gap = proj.gap;
+              const CablePoint  &pt   = d.points[q];
+              const unsigned int m    = best_master[q];
+              const Projection  &proj = best_projection[q];
+              double             gap  = proj.gap;
               if (d.beam)
                 {
                   // The section's extent along n instead of R.
@@ -373,7 +366,8 @@ namespace pneuma
                     (1. - pt.eta) * sc.a1[0] + pt.eta * sc.a1[1];
                   const Tensor<1, 3> a2 =
                     (1. - pt.eta) * sc.a2[0] + pt.eta * sc.a2[1];
-                  gap += d.radius - std::hypot(a1 * proj.normal, a2 * proj.normal);
+                  gap +=
+                    d.radius - std::hypot(a1 * proj.normal, a2 * proj.normal);
                 }
               if (gap >= 0.)
                 continue;
@@ -392,25 +386,15 @@ namespace pneuma
               dofs.insert(dofs.end(),
                           masters[m].dofs.begin(),
                           masters[m].dofs.end());
-              if (tangent && residual)
-                constraints.distribute_local_to_global(
-                  hessian, gradient, dofs, *tangent, *residual);
-              else if (residual)
-                constraints.distribute_local_to_global(gradient,
-                                                       dofs,
-                                                       *residual);
-              else if (tangent)
-                constraints.distribute_local_to_global(hessian,
-                                                       dofs,
-                                                       *tangent);
+              LA::distribute(
+                constraints, hessian, gradient, dofs, tangent, residual);
               const double N = -p.penalty * gap; // >= 0
               d.line_load[q] = N;
               ++report.active_points;
               report.total_force += N * pt.weight;
               for (unsigned int i = 0; i < 3; ++i)
                 report.force[i] += N * pt.weight * proj.normal[i];
-              report.max_penetration =
-                std::max(report.max_penetration, -gap);
+              report.max_penetration = std::max(report.max_penetration, -gap);
               master_force[m] += N * pt.weight;
 
               if (p.friction > 0.)
@@ -427,51 +411,30 @@ namespace pneuma
                   Point<2> xi_a = d.anchor_xi[q];
                   if (static_cast<unsigned int>(d.anchor[q]) != m)
                     {
-                      const unsigned int ma = d.anchor[q];
-                      if (!have_patch[ma])
-                        {
-                          patches[ma]    = patch(masters[ma], d, p.outside, &u);
-                          have_patch[ma] = true;
-                        }
-                      Tensor<1, 3> ya;
-                      // rho_ma(xi_a) by the lattice interpolation.
-                      const unsigned int k = degree + 1;
-                      const auto         l = [&](const unsigned int i, const double t) {
-                        if (degree == 1)
-                          return i == 0 ? 1. - t : t;
-                        return i == 0 ? 2. * (t - 0.5) * (t - 1.) :
-                               i == 1 ? -4. * t * (t - 1.) :
-                                        2. * t * (t - 0.5);
-                      };
-                      for (unsigned int a = 0; a < patches[ma].nodes.size(); ++a)
-                        ya += l(a % k, xi_a[0]) * l(a / k, xi_a[1]) *
-                              patches[ma].nodes[a];
+                      const Tensor<1, 3> ya =
+                        position(current(d.anchor[q]), xi_a);
                       xi_a = project(patches[m], ya, 0., proj.xi).xi;
                     }
-                  const FrictionState fs = friction_terms(patches[m],
-                                                          xi_a,
-                                                          sl,
-                                                          pt.eta,
-                                                          d.radius,
-                                                          p.penalty,
-                                                          p.tangential_penalty,
-                                                          p.friction,
-                                                          pt.weight,
-                                                          proj.xi,
-                                                          &f_residual,
-                                                          tangent ? &f_jacobian : nullptr,
-                                                          d.beam ? &sections[pt.cable_cell] : nullptr);
-                  if (tangent && residual)
-                    constraints.distribute_local_to_global(
-                      f_jacobian, f_residual, dofs, *tangent, *residual);
-                  else if (residual)
-                    constraints.distribute_local_to_global(f_residual,
-                                                           dofs,
-                                                           *residual);
-                  else if (tangent)
-                    constraints.distribute_local_to_global(f_jacobian,
-                                                           dofs,
-                                                           *tangent);
+                  const FrictionState fs =
+                    friction_terms(patches[m],
+                                   xi_a,
+                                   sl,
+                                   pt.eta,
+                                   d.radius,
+                                   p.penalty,
+                                   p.tangential_penalty,
+                                   p.friction,
+                                   pt.weight,
+                                   proj.xi,
+                                   &f_residual,
+                                   tangent ? &f_jacobian : nullptr,
+                                   d.beam ? &sections[pt.cable_cell] : nullptr);
+                  LA::distribute(constraints,
+                                 f_jacobian,
+                                 f_residual,
+                                 dofs,
+                                 tangent,
+                                 residual);
                   report.friction_force += fs.traction.norm() * pt.weight;
                   if (fs.slip)
                     {
@@ -481,13 +444,8 @@ namespace pneuma
                       double best_d = std::numeric_limits<double>::max();
                       for (const unsigned int c : d.candidates[pt.cable_cell])
                         {
-                          if (!have_patch[c])
-                            {
-                              patches[c]    = patch(masters[c], d, p.outside, &u);
-                              have_patch[c] = true;
-                            }
                           const Projection a =
-                            project(patches[c], fs.anchor_target, 0.);
+                            project(current(c), fs.anchor_target, 0.);
                           if (a.inside && a.distance < best_d)
                             {
                               best_d              = a.distance;
@@ -552,7 +510,8 @@ namespace pneuma
             Vector<double>      sum(d.cell_dofs.size());
             for (unsigned int q = 0; q < d.points.size(); ++q)
               {
-                sum[d.points[q].cable_cell] += d.line_load[q] * d.points[q].weight;
+                sum[d.points[q].cable_cell] +=
+                  d.line_load[q] * d.points[q].weight;
                 weight[d.points[q].cable_cell] += d.points[q].weight;
               }
             for (unsigned int c = 0; c < load.size(); ++c)

@@ -230,20 +230,12 @@ namespace pneuma
                                request.residual ? &cell_residual : nullptr,
                                dof_indices);
 
-          if (want_matrix && request.residual)
-            constraints.distribute_local_to_global(cell_matrix,
-                                                   cell_residual,
-                                                   dof_indices,
-                                                   *request.tangent,
-                                                   *request.residual);
-          else if (want_matrix)
-            constraints.distribute_local_to_global(cell_matrix,
-                                                   dof_indices,
-                                                   *request.tangent);
-          else if (request.residual)
-            constraints.distribute_local_to_global(cell_residual,
-                                                   dof_indices,
-                                                   *request.residual);
+          LA::distribute(constraints,
+                         cell_matrix,
+                         cell_residual,
+                         dof_indices,
+                         want_matrix ? request.tangent : nullptr,
+                         request.residual);
           if (request.external)
             constraints.distribute_local_to_global(cell_external,
                                                    dof_indices,

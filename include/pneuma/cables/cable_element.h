@@ -52,10 +52,6 @@ namespace pneuma
       CablePoint
       evaluate(const Tensor<1, 3> &dx_dS) const;
 
-      /// Energy per reference length at @p dx_dS.
-      double
-      energy(const Tensor<1, 3> &dx_dS) const;
-
     private:
       double EA, rho, slack;
     };

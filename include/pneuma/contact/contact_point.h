@@ -38,6 +38,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <array>
+#include <utility>
 #include <vector>
 
 namespace pneuma
@@ -79,6 +80,14 @@ namespace pneuma
       double       distance = 0., gap = 0.;
       Tensor<1, 3> normal;
     };
+
+    /// The point rho(xi) of @p patch.
+    Tensor<1, 3>
+    position(const MasterPatch &patch, const Point<2> &xi);
+
+    /// The axis-aligned box (lower, upper corner) of the patch's nodes.
+    std::pair<Tensor<1, 3>, Tensor<1, 3>>
+    bounding_box(const MasterPatch &patch);
 
     /// Closest point of @p x on @p patch, starting from @p xi_start.
     Projection

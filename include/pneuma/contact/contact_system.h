@@ -164,9 +164,10 @@ namespace pneuma
         std::vector<Point<2>> anchor_xi, pending_xi;
       };
 
+      /// The current patch of master @p m, its normal turned to the side
+      /// @p outside (u = nullptr: the reference).
       MasterPatch
-      patch(const MasterCell &m, const PairData &p, const bool outside,
-            const LA::Vector *u) const;
+      patch(const MasterCell &m, const bool outside, const LA::Vector *u) const;
 
       const ContactParameters        &parameters;
       const geometry::SceneGenerator &geometry;
