@@ -6,6 +6,7 @@
 #include <deal.II/lac/sparsity_tools.h>
 
 #include <pneuma/core/input_error.h>
+#include <pneuma/core/share_constraints.h>
 
 #include "simulator_impl.h"
 
@@ -245,6 +246,19 @@ namespace pneuma
     cable_system.assemble_regularisation(constraints, laplacian);
   }
 
+  IndexSet
+  Simulator::Impl::shared_masters() const
+  {
+    // Masters that dependent dofs on any rank refer to: junction masters
+    // and the plates' master nodes (share_constraints.h).
+    IndexSet result(locally_relevant.size());
+    result.add_indices(junction_ties.masters);
+    for (const auto d : rigid_regions.plate_master_dofs())
+      result.add_index(d);
+    result.compress();
+    return result;
+  }
+
   void
   Simulator::Impl::make_constraints()
   {
@@ -259,6 +273,10 @@ namespace pneuma
         rigid_regions.add_constraints(*mapping,
                                       dof_handler,
                                       kinematic_constraints);
+        share_constraint_lines(kinematic_constraints,
+                               shared_masters(),
+                               locally_owned,
+                               comm);
         junction_ties.add_constraints(kinematic_constraints);
       }
     kinematic_constraints.close();
@@ -269,9 +287,12 @@ namespace pneuma
     if (has_membrane())
       boundary_conditions.add_update_constraints(dof_handler,
                                                  rigid_regions.slave_dofs(),
+                                                 rigid_regions.plate_master_dofs(),
                                                  junction_ties.copies(),
                                                  constraints);
     cable_system.add_support_constraints(constraints);
+    if (has_membrane())
+      share_constraint_lines(constraints, shared_masters(), locally_owned, comm);
     constraints.close();
   }
 
@@ -434,6 +455,11 @@ namespace pneuma
                                    solvers::BorderedVector       &y)
   {
     laplacian.vmult(y.field, x.field);
+    // Rows of dependent and prescribed dofs carry only the diagonal that
+    // the condensation leaves; the residual has no such rows, and neither
+    // may its regularisation (else the regularised residual keeps a part
+    // that no update can remove).
+    constraints.set_zero(y.field);
     y.border.reinit(x.border.size());
   }
 
@@ -780,8 +806,14 @@ namespace pneuma
       u.field[i] =
         amplitude * (2. * std::sin(1.7 * i + 0.3) * std::cos(0.37 * i));
     u.field.compress(VectorOperation::insert);
+    // An admissible state: prescribed values zero, dependent dofs (rigid
+    // plates, junction copies) following their masters.
     s.constraints.set_zero(u.field);
+    s.constraints.distribute(u.field);
 
+    // The direction d acts on the independent dofs: K d with the condensed
+    // tangent, and the residual is perturbed along d with its dependent
+    // dofs distributed (C d).
     solvers::BorderedVector direction(u);
     for (const auto i : s.locally_owned)
       direction.field[i] = std::cos(0.91 * i + 0.1);
@@ -811,11 +843,13 @@ namespace pneuma
     else
       s.chamber_system.vmult(s.tangent, direction, Kd);
 
+    solvers::BorderedVector full(direction);
+    s.constraints.distribute(full.field);
     solvers::BorderedVector up(u);
-    up.add(h, direction);
+    up.add(h, full);
     s.assemble(up, r_plus);
     solvers::BorderedVector um(u);
-    um.add(-h, direction);
+    um.add(-h, full);
     s.assemble(um, r_minus);
     fd = r_plus;
     fd -= r_minus;

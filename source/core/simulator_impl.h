@@ -68,6 +68,9 @@ namespace pneuma
     setup_system();
     void
     make_constraints();
+    /// Masters that dependent dofs refer to (share_constraints.h).
+    IndexSet
+    shared_masters() const;
     /// Sparsity pattern, tangent and regularisation matrix (again when the
     /// contact couplings grow).
     void

@@ -5,122 +5,155 @@
 #include <pneuma/geometry/junctions.h>
 
 #include <algorithm>
+#include <array>
 #include <map>
 
 namespace pneuma
 {
   namespace geometry
   {
-    bool
-    split_junctions(const Triangulation<2, 3> &in, Triangulation<2, 3> &out)
+    unsigned int
+    split_junctions(SurfaceMeshData &data)
     {
-      std::map<unsigned int, unsigned int> line_cells;
-      for (const auto &cell : in.active_cell_iterators())
-        for (const auto l : cell->line_indices())
-          ++line_cells[cell->line_index(l)];
+      using Line     = std::pair<unsigned int, unsigned int>;
+      const auto key = [](const unsigned int a, const unsigned int b) {
+        return Line(std::min(a, b), std::max(a, b));
+      };
+      // The four edges of a quadrilateral in deal.II vertex order.
+      static constexpr unsigned int edge[4][2] = {{0, 2},
+                                                  {1, 3},
+                                                  {0, 1},
+                                                  {2, 3}};
+      auto                         &cells      = data.cells;
+
+      std::map<Line, std::vector<unsigned int>> line_cells;
+      for (unsigned int c = 0; c < cells.size(); ++c)
+        for (const auto &e : edge)
+          line_cells[key(cells[c].vertices[e[0]], cells[c].vertices[e[1]])]
+            .push_back(c);
+      std::set<Line>         junction_lines;
       std::set<unsigned int> junction_vertices;
-      for (const auto &cell : in.active_cell_iterators())
-        for (const auto l : cell->line_indices())
-          if (line_cells[cell->line_index(l)] > 2)
-            {
-              junction_vertices.insert(cell->line(l)->vertex_index(0));
-              junction_vertices.insert(cell->line(l)->vertex_index(1));
-            }
-      if (junction_vertices.empty())
-        return false;
-
-      // One copy of each junction vertex per material region.
-      std::vector<Point<3>> vertices = in.get_vertices();
-      std::map<std::pair<unsigned int, types::material_id>, unsigned int>
-        copy_of;
-      const auto vertex_for = [&](const unsigned int       v,
-                                  const types::material_id m) {
-        if (!junction_vertices.count(v))
-          return v;
-        const auto key = std::make_pair(v, m);
-        auto       it  = copy_of.find(key);
-        if (it != copy_of.end())
-          return it->second;
-        // The first region keeps the original vertex.
-        bool used = false;
-        for (const auto &[k, index] : copy_of)
-          if (k.first == v)
-            used = true;
-        unsigned int index = v;
-        if (used)
+      for (const auto &[line, on] : line_cells)
+        if (on.size() > 2)
           {
-            index = vertices.size();
-            vertices.push_back(vertices[v]);
+            junction_lines.insert(line);
+            junction_vertices.insert(line.first);
+            junction_vertices.insert(line.second);
           }
-        copy_of[key] = index;
-        return index;
-      };
+      if (junction_lines.empty())
+        return 0;
 
-      std::vector<CellData<2>> cells;
-      for (const auto &cell : in.active_cell_iterators())
+      std::map<unsigned int, std::vector<unsigned int>> vertex_cells;
+      for (unsigned int c = 0; c < cells.size(); ++c)
+        for (const auto v : cells[c].vertices)
+          if (junction_vertices.count(v))
+            vertex_cells[v].push_back(c);
+
+      // Original line of every (cell, edge), to carry tags across the split.
+      std::vector<std::array<Line, 4>> original(cells.size());
+      for (unsigned int c = 0; c < cells.size(); ++c)
+        for (unsigned int e = 0; e < 4; ++e)
+          original[c][e] =
+            key(cells[c].vertices[edge[e][0]], cells[c].vertices[edge[e][1]]);
+
+      // Fans around each junction vertex: cells joined through lines at the
+      // vertex that are not junctions (union-find); all fans but the first
+      // get a copy of the vertex.
+      std::vector<std::array<unsigned int, 4>> new_vertex(cells.size());
+      for (unsigned int c = 0; c < cells.size(); ++c)
+        for (unsigned int i = 0; i < 4; ++i)
+          new_vertex[c][i] = cells[c].vertices[i];
+      for (const auto &[v, around] : vertex_cells)
         {
-          CellData<2> c;
-          c.vertices.resize(4);
-          for (const auto v : cell->vertex_indices())
-            c.vertices[v] =
-              vertex_for(cell->vertex_index(v), cell->material_id());
-          c.material_id = cell->material_id();
-          c.manifold_id = cell->manifold_id();
-          cells.push_back(c);
+          std::vector<unsigned int> parent(around.size());
+          for (unsigned int k = 0; k < around.size(); ++k)
+            parent[k] = k;
+          const auto root = [&](unsigned int k) {
+            while (parent[k] != k)
+              k = parent[k] = parent[parent[k]];
+            return k;
+          };
+          std::map<Line, std::vector<unsigned int>> lines_at_v;
+          for (unsigned int k = 0; k < around.size(); ++k)
+            for (unsigned int e = 0; e < 4; ++e)
+              {
+                const auto &line = original[around[k]][e];
+                if ((line.first == v || line.second == v)
+                    && !junction_lines.count(line))
+                  lines_at_v[line].push_back(k);
+              }
+          for (const auto &[line, ks] : lines_at_v)
+            for (unsigned int k = 1; k < ks.size(); ++k)
+              parent[root(ks[k])] = root(ks[0]);
+          std::map<unsigned int, unsigned int> copy_of_fan;
+          for (unsigned int k = 0; k < around.size(); ++k)
+            {
+              const unsigned int fan = root(k);
+              auto               it  = copy_of_fan.find(fan);
+              if (it == copy_of_fan.end())
+                {
+                  unsigned int index = v;
+                  if (!copy_of_fan.empty())
+                    {
+                      index = data.vertices.size();
+                      data.vertices.push_back(data.vertices[v]);
+                    }
+                  it = copy_of_fan.emplace(fan, index).first;
+                }
+              for (unsigned int i = 0; i < 4; ++i)
+                if (cells[around[k]].vertices[i] == v)
+                  new_vertex[around[k]][i] = it->second;
+            }
         }
+      for (unsigned int c = 0; c < cells.size(); ++c)
+        for (unsigned int i = 0; i < 4; ++i)
+          cells[c].vertices[i] = new_vertex[c][i];
 
-      // Boundary ids: lines that become boundaries by the split are
-      // junction faces; old boundary lines keep theirs.
-      std::map<std::pair<unsigned int, unsigned int>, unsigned int> new_count;
-      const auto key = [](unsigned int a, unsigned int b) {
-        return std::make_pair(std::min(a, b), std::max(a, b));
-      };
-      for (const auto &cell : in.active_cell_iterators())
-        for (const auto l : cell->line_indices())
+      // Tags: a tagged boundary line keeps its id on its one cell; every
+      // line that the split turned into a boundary is a junction face.
+      std::map<Line, types::boundary_id> tag;
+      for (const auto &l : data.tagged_lines)
+        tag[key(l.vertices[0], l.vertices[1])] = l.boundary_id;
+      std::map<Line, unsigned int> new_count;
+      for (const auto &c : cells)
+        for (const auto &e : edge)
+          ++new_count[key(c.vertices[e[0]], c.vertices[e[1]])];
+      std::vector<CellData<1>> tagged;
+      for (unsigned int c = 0; c < cells.size(); ++c)
+        for (unsigned int e = 0; e < 4; ++e)
           {
-            const auto line = cell->line(l);
-            ++new_count[key(vertex_for(line->vertex_index(0),
-                                       cell->material_id()),
-                             vertex_for(line->vertex_index(1),
-                                        cell->material_id()))];
-          }
-      SubCellData sub;
-      std::set<std::pair<unsigned int, unsigned int>> done;
-      for (const auto &cell : in.active_cell_iterators())
-        for (const auto l : cell->line_indices())
-          {
-            const auto line = cell->line(l);
-            const auto k =
-              key(vertex_for(line->vertex_index(0), cell->material_id()),
-                  vertex_for(line->vertex_index(1), cell->material_id()));
-            if (new_count[k] != 1 || !done.insert(k).second)
+            const Line now =
+              key(cells[c].vertices[edge[e][0]], cells[c].vertices[edge[e][1]]);
+            if (new_count[now] != 1)
               continue;
-            const bool was_boundary = line_cells[cell->line_index(l)] == 1;
-            CellData<1> b;
-            b.vertices    = {k.first, k.second};
-            b.boundary_id = was_boundary ? line->boundary_id() :
-                                           junction_boundary_id;
-            b.manifold_id = line->manifold_id();
-            sub.boundary_lines.push_back(b);
+            const auto &was = original[c][e];
+            CellData<1> l;
+            l.vertices = {now.first, now.second};
+            if (line_cells[was].size() > 1)
+              l.boundary_id = junction_boundary_id;
+            else if (tag.count(was))
+              l.boundary_id = tag[was];
+            else
+              continue;
+            tagged.push_back(l);
           }
-      out.clear();
-      out.create_triangulation(vertices, cells, sub);
-      return true;
+      data.tagged_lines = tagged;
+      return junction_lines.size();
     }
 
     void
-    JunctionTies::find(const Mapping<2, 3>                 &mapping,
-                       const DoFHandler<2, 3>              &dof_handler,
+    JunctionTies::find(const Mapping<2, 3>                &mapping,
+                       const DoFHandler<2, 3>             &dof_handler,
                        const std::set<types::material_id> &rigid_ids,
-                       const IndexSet                      &locally_relevant)
+                       const IndexSet                     &locally_relevant)
     {
       const MPI_Comm comm = dof_handler.get_communicator();
       ties.clear();
-      masters = IndexSet(dof_handler.n_dofs());
+      masters        = IndexSet(dof_handler.n_dofs());
       const auto &fe = dof_handler.get_fe();
 
       // Records on junction faces: x, y, z, component, dof, rigid.
-      std::vector<double> local;
+      std::vector<double>                  local;
       std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
       std::map<types::global_dof_index, Point<3>> support;
       DoFTools::map_dofs_to_support_points(mapping, dof_handler, support);
@@ -130,27 +163,25 @@ namespace pneuma
           {
             size = std::max(size, cell->diameter());
             for (const auto f : cell->face_indices())
-              if (cell->face(f)->at_boundary() &&
-                  cell->face(f)->boundary_id() == junction_boundary_id)
+              if (cell->face(f)->at_boundary()
+                  && cell->face(f)->boundary_id() == junction_boundary_id)
                 {
                   cell->face(f)->get_dof_indices(face_dofs);
                   for (unsigned int i = 0; i < face_dofs.size(); ++i)
                     {
                       const Point<3> &x = support.at(face_dofs[i]);
-                      local.insert(local.end(),
-                                   {x[0],
-                                    x[1],
-                                    x[2],
-                                    double(fe.face_system_to_component_index(i)
-                                             .first),
-                                    double(face_dofs[i]),
-                                    rigid_ids.count(cell->material_id()) ?
-                                      1. :
-                                      0.});
+                      local.insert(
+                        local.end(),
+                        {x[0],
+                         x[1],
+                         x[2],
+                         double(fe.face_system_to_component_index(i).first),
+                         double(face_dofs[i]),
+                         rigid_ids.count(cell->material_id()) ? 1. : 0.});
                     }
                 }
           }
-      size = Utilities::MPI::max(size, comm);
+      size                = Utilities::MPI::max(size, comm);
       const auto gathered = Utilities::MPI::all_gather(comm, local);
       struct Record
       {
@@ -166,11 +197,13 @@ namespace pneuma
                              static_cast<unsigned int>(part[k + 3]),
                              static_cast<types::global_dof_index>(part[k + 4]),
                              part[k + 5] > 0.5});
-      std::sort(records.begin(), records.end(), [](const auto &a, const auto &b) {
-        return a.component != b.component ? a.component < b.component :
-                                            a.x[0] < b.x[0];
-      });
-      const double tolerance = 1e-8 * size;
+      std::sort(records.begin(),
+                records.end(),
+                [](const auto &a, const auto &b) {
+                  return a.component != b.component ? a.component < b.component
+                                                    : a.x[0] < b.x[0];
+                });
+      const double      tolerance = 1e-8 * size;
       std::vector<bool> grouped(records.size(), false);
       for (unsigned int a = 0; a < records.size(); ++a)
         {
@@ -178,9 +211,9 @@ namespace pneuma
             continue;
           std::vector<unsigned int> group = {a};
           for (unsigned int b = a + 1;
-               b < records.size() &&
-               records[b].component == records[a].component &&
-               records[b].x[0] - records[a].x[0] <= tolerance;
+               b < records.size()
+               && records[b].component == records[a].component
+               && records[b].x[0] - records[a].x[0] <= tolerance;
                ++b)
             if (!grouped[b] && records[b].x.distance(records[a].x) <= tolerance)
               group.push_back(b);
@@ -200,9 +233,10 @@ namespace pneuma
                 break;
               }
           masters.add_index(master->first);
+
           for (const auto &[dof, rigid] : dofs)
-            if (dof != master->first && !(rigid && master->second) &&
-                locally_relevant.is_element(dof))
+            if (dof != master->first && !(rigid && master->second)
+                && locally_relevant.is_element(dof))
               ties.emplace_back(dof, master->first);
         }
       masters.compress();
@@ -212,8 +246,8 @@ namespace pneuma
     JunctionTies::add_constraints(AffineConstraints<double> &constraints) const
     {
       for (const auto &[copy, master] : ties)
-        if (constraints.can_store_line(copy) &&
-            !constraints.is_constrained(copy))
+        if (constraints.can_store_line(copy)
+            && !constraints.is_constrained(copy))
           {
             constraints.add_line(copy);
             constraints.add_entry(copy, master, 1.);

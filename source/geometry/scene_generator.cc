@@ -1,11 +1,11 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/grid/tria.h>
 
 #include <pneuma/core/input_error.h>
+#include <pneuma/geometry/gmsh_surface_reader.h>
 #include <pneuma/geometry/junctions.h>
 #include <pneuma/geometry/scene_generator.h>
 
@@ -163,19 +163,16 @@ namespace pneuma
         }
       else
         {
-          GridIn<2, 3> grid_in;
-          grid_in.attach_triangulation(coarse);
-          std::ifstream in(mesh_file);
-          try
-            {
-              grid_in.read_msh(in);
-            }
-          catch (const std::exception &e)
-            {
-              throw InputError("Geometry/Mesh file",
-                               "cannot read '" + mesh_file
-                                 + "' as a 2D-in-3D Gmsh mesh");
-            }
+          // Read as lists, split the junction lines (more than two cells
+          // on a line: dividers, shared seams) per fan for p4est, then
+          // order and create (gmsh_surface_reader.h, junctions.h); the
+          // copies are tied after the dofs exist.
+          auto data = read_gmsh_surface(mesh_file, "Geometry/Mesh file");
+          check_input(!data.cells.empty(),
+                      "Geometry/Mesh file",
+                      "'" + mesh_file + "' has no quadrilateral cells");
+          split_junctions(data);
+          create_from_surface_data(data, coarse);
           check_input(coarse.n_active_cells() > 0,
                       "Geometry/Mesh file",
                       "'" + mesh_file + "' has no surface cells");
@@ -195,14 +192,7 @@ namespace pneuma
         for (const auto &cell : coarse.active_cell_iterators())
           cell->set_material_id(0);
 
-      // Lines joining more than two cells (dividers, shared seams) are
-      // split per region for p4est; the copies are tied after the dofs
-      // exist (junctions.h).
-      Triangulation<2, 3> split;
-      if (split_junctions(coarse, split))
-        tria.copy_triangulation(split);
-      else
-        tria.copy_triangulation(coarse);
+      tria.copy_triangulation(coarse);
 
       // Manifolds: curved surfaces and rims follow the true geometry.
       if (geometry_type == "sphere")

@@ -205,12 +205,12 @@ namespace pneuma
       if (!displaced_regions.empty())
         {
           displacement_function->set_time(t);
-          const auto &fe = dof_handler.get_fe();
-          const auto &unit_points = fe.get_unit_support_points();
+          const auto    &fe          = dof_handler.get_fe();
+          const auto    &unit_points = fe.get_unit_support_points();
           Vector<double> value(3);
           for (const auto &cell : dof_handler.active_cell_iterators())
-            if (!cell->is_artificial() &&
-                displaced_regions.count(cell->material_id()))
+            if (!cell->is_artificial()
+                && displaced_regions.count(cell->material_id()))
               {
                 dofs.resize(fe.n_dofs_per_cell());
                 cell->get_dof_indices(dofs);
@@ -249,14 +249,24 @@ namespace pneuma
 
     void
     BoundaryConditions::add_update_constraints(
-      const DoFHandler<2, 3>                  &dof_handler,
-      const std::set<types::global_dof_index> &rigid_slaves,
-      const std::set<types::global_dof_index> &junction_copies,
-      AffineConstraints<double>               &constraints) const
+      const DoFHandler<2, 3>                     &dof_handler,
+      const std::set<types::global_dof_index>    &rigid_slaves,
+      const std::vector<types::global_dof_index> &rigid_masters,
+      const std::set<types::global_dof_index>    &junction_copies,
+      AffineConstraints<double>                  &constraints) const
     {
       // The mapping does not matter for homogeneous values.
       const auto values =
         prescribed_dofs(StaticMappingQ1<2, 3>::mapping, dof_handler, 0.);
+      // Plate masters prescribed on any rank (a rank need not see them).
+      std::vector<int> held(rigid_masters.size());
+      for (unsigned int k = 0; k < rigid_masters.size(); ++k)
+        held[k] = values.count(rigid_masters[k]) ? 1 : 0;
+      Utilities::MPI::max(held, dof_handler.get_communicator(), held);
+      std::set<types::global_dof_index> held_masters;
+      for (unsigned int k = 0; k < rigid_masters.size(); ++k)
+        if (held[k])
+          held_masters.insert(rigid_masters[k]);
       bool conflict = false;
       for (const auto &v : values)
         {
@@ -265,7 +275,19 @@ namespace pneuma
           if (junction_copies.count(v.first))
             continue;
           if (rigid_slaves.count(v.first))
-            conflict = true;
+            {
+              // Redundant, not a conflict, where the plate's own copy of a
+              // junction vertex is its prescribed master (a support at the
+              // plate's reference node when that is a junction vertex).
+              bool redundant = constraints.is_constrained(v.first);
+              if (redundant)
+                for (const auto &e :
+                     *constraints.get_constraint_entries(v.first))
+                  if (std::abs(e.second) > 1e-12
+                      && !held_masters.count(e.first))
+                    redundant = false;
+              conflict = conflict || !redundant;
+            }
           else if (constraints.can_store_line(v.first)
                    && !constraints.is_constrained(v.first))
             constraints.add_line(v.first);

@@ -7,18 +7,24 @@
  * "Junctions").
  *
  * p4est needs every cell edge to join at most two cells, so the coarse mesh
- * is split along junction lines: each material region gets its own copy of
- * the junction vertices, and the faces that the split creates get the
- * boundary id junction_boundary_id. After the dofs are distributed, the
- * coincident copies are tied together by constraints
- * \f$u_{copy} = u_{master}\f$ (the copy in a rigid plate, if any, is the
- * master), which restores the shared motion of the junction exactly.
+ * is split along junction lines before the Triangulation is made: around
+ * each junction vertex, the cells that are joined through ordinary
+ * (two-cell) lines form a fan, and each fan gets its own copy of the vertex.
+ * Every junction line thus becomes a boundary line of each cell on it, with
+ * the boundary id junction_boundary_id, also where one region lies on both
+ * sides of it (a tube whose seam is its junction with a hull and a divider).
+ * After the dofs are distributed, the coincident copies are tied together by
+ * constraints \f$u_{copy} = u_{master}\f$ (the copy in a rigid plate, if
+ * any, is the master), which restores the shared motion of the junction
+ * exactly.
  */
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
+
+#include <pneuma/geometry/gmsh_surface_reader.h>
 
 #include <set>
 #include <utility>
@@ -34,12 +40,12 @@ namespace pneuma
     constexpr types::boundary_id junction_boundary_id = 254;
 
     /**
-     * If @p in has lines shared by more than two cells, build in @p out the
-     * same mesh with the junction vertices duplicated per material region
-     * and return true; otherwise leave @p out untouched and return false.
+     * Split the junction lines of @p data (lines of more than two cells) by
+     * fans as described above, and tag the faces that the split creates
+     * with junction_boundary_id. Returns the number of junction lines.
      */
-    bool
-    split_junctions(const Triangulation<2, 3> &in, Triangulation<2, 3> &out);
+    unsigned int
+    split_junctions(SurfaceMeshData &data);
 
     /// Ties between coincident dofs on junction faces.
     struct JunctionTies
@@ -49,6 +55,7 @@ namespace pneuma
         ties;
       /// Every master: each rank must see them.
       IndexSet masters;
+
 
       /// Find the ties of the distributed mesh; a copy in a cell whose
       /// material id is in @p rigid_ids (rigid plates, prescribed regions)

@@ -47,9 +47,10 @@ namespace pneuma
       void
       add_update_constraints(
         const DoFHandler<2, 3>                  &dof_handler,
-        const std::set<types::global_dof_index> &rigid_slaves,
-        const std::set<types::global_dof_index> &junction_copies,
-        AffineConstraints<double>               &constraints) const;
+        const std::set<types::global_dof_index>    &rigid_slaves,
+        const std::vector<types::global_dof_index> &rigid_masters,
+        const std::set<types::global_dof_index>    &junction_copies,
+        AffineConstraints<double>                  &constraints) const;
 
       /**
        * Write the prescribed values at pseudo time @p t into the owned

@@ -70,6 +70,18 @@ namespace pneuma
         return ids;
       }
 
+      /// The master dofs of all plates (the same list on every rank).
+      std::vector<types::global_dof_index>
+      plate_master_dofs() const
+      {
+        std::vector<types::global_dof_index> result;
+        for (const auto &plate : plates)
+          result.insert(result.end(),
+                        plate.master_dofs.begin(),
+                        plate.master_dofs.end());
+        return result;
+      }
+
       /// The slave dofs added by add_constraints (locally relevant ones).
       const std::set<types::global_dof_index> &
       slave_dofs() const
@@ -86,6 +98,15 @@ namespace pneuma
       };
       std::vector<std::set<types::material_id>> region_ids;
       std::vector<Plate>                        plates;
+
+      /// u_dof = sum of the barycentric weights of x times the plate's
+      /// master displacements (component c); false if not added.
+      bool
+      constrain(const Plate                   &plate,
+                const types::global_dof_index  dof,
+                const Point<3>                &x,
+                const unsigned int             c,
+                AffineConstraints<double>     &constraints) const;
       mutable std::set<types::global_dof_index> slaves;
     };
   } // namespace loads

@@ -1,0 +1,59 @@
+#pragma once
+
+/**
+ * @file
+ * Reading a Gmsh surface mesh (quadrilaterals in 3D) into raw vertex and
+ * cell lists, before any Triangulation exists.
+ *
+ * deal.II's GridIn::read_msh builds the Triangulation at once, and its cell
+ * reordering (GridTools::consistently_order_cells) does not terminate on
+ * surfaces where a line is shared by more than two cells, as where a
+ * waterbeam's small tube, its divider and its hull meet (five cells on one
+ * line). pneuma therefore reads the file itself, splits such junction lines
+ * (junctions.h) and only then orders the cells and creates the mesh with
+ * deal.II. Both ASCII formats that Gmsh writes are read: MSH 2.2 and MSH 4.1.
+ *
+ * Physical surfaces give the material ids of the quadrilaterals; physical
+ * curves give the boundary ids of boundary lines; quadrilaterals outside
+ * any physical surface get material id 0 (as in GridIn).
+ */
+
+#include <deal.II/base/point.h>
+#include <deal.II/grid/tria_description.h>
+
+#include <string>
+#include <vector>
+
+namespace pneuma
+{
+  namespace geometry
+  {
+    using namespace dealii;
+
+    /// A surface mesh as lists: the input of create_triangulation().
+    struct SurfaceMeshData
+    {
+      std::vector<Point<3>> vertices;
+      /// Quadrilaterals with vertices in deal.II (lexicographic) order.
+      std::vector<CellData<2>> cells;
+      /// Lines with a physical curve tag, as boundary ids.
+      std::vector<CellData<1>> tagged_lines;
+    };
+
+    /**
+     * Read the quadrilaterals and tagged lines of the Gmsh file @p file.
+     * Throws an InputError naming @p parameter and the file when the file is
+     * missing, binary, of an unknown version, truncated, or holds
+     * triangles or higher-order cells.
+     */
+    SurfaceMeshData
+    read_gmsh_surface(const std::string &file, const std::string &parameter);
+
+    /**
+     * Drop unused vertices, orient the cells consistently and create
+     * @p tria from @p data (every line must join at most two cells).
+     */
+    void
+    create_from_surface_data(SurfaceMeshData &data, Triangulation<2, 3> &tria);
+  } // namespace geometry
+} // namespace pneuma

@@ -1,0 +1,120 @@
+// The waterbeam cross-section (meshes/waterbeam.msh): a seam line joined by
+// five cells (hulls of chamber halves 1a and 1b, the divider, and both sides
+// of the small tube), a three-cell line at the bottom of the divider, and
+// rigid end plates made of three caps each. Checks:
+//  - the mesh is read and split into fans (no hang in cell reordering);
+//  - the junction copies are tied: the bordered Jacobian of the scene
+//    (three gas chambers, one connected) matches central finite
+//    differences to 1e-6 at a perturbed state;
+//  - the inflation to 1 bar (stage 1 of parameter_files/waterbeam_filling.prm)
+//    converges, quadratically in its last step; the support reactions
+//    balance the applied loads (1e-6), which are the weight of membrane and
+//    steel plates (the polygonal caps are 0.3 % smaller than the discs:
+//    5e-3); the structure stays symmetric about the divider plane
+//    (|u_y| at the seam and the divider's bottom line below 1e-6 of the
+//    hoop displacement); the connected halves 1a and 1b keep equal volumes.
+
+#include "test_paths.h"
+#include "test_tools.h"
+
+#include <pneuma/core/simulator.h>
+
+#include <cmath>
+#include <cstdio>
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const std::string                        root = PNEUMA_SOURCE_DIR;
+  // Further "Path/Entry=value" overrides from the command line (to
+  // explore variants by hand).
+  std::vector<std::string> overrides = {"Geometry/Mesh file=" + root
+                                          + "/meshes/waterbeam.msh",
+                                        "Output/Quiet=true"};
+  for (int i = 1; i < argc; ++i)
+    overrides.emplace_back(argv[i]);
+  dealii::ParameterHandler prm;
+  pneuma::read_parameters(prm,
+                          root + "/parameter_files/waterbeam_filling.prm",
+                          overrides);
+  bool ok = true;
+  for (const double t : {0.5, 1.})
+    {
+      pneuma::Simulator simulator(MPI_COMM_WORLD);
+      simulator.parse_parameters(prm);
+      simulator.setup();
+      const auto check = simulator.check_tangent(t, 1e-3, 1e-7);
+      const bool pass  = check.relative_error < 1e-6;
+      std::printf("waterbeam at t = %.1f: Jacobian vs finite differences %s\n",
+                  t,
+                  pass ? "relative error < 1e-6" : "FAIL");
+      if (!pass)
+        std::printf("  relative error %.3e\n", check.relative_error);
+      ok = ok && pass;
+    }
+
+  pneuma::Simulator simulator(MPI_COMM_WORLD);
+  prm.enter_subsection("Output");
+  prm.set("Directory", "output-waterbeam");
+  prm.set("Write VTU", false);
+  prm.leave_subsection();
+  simulator.parse_parameters(prm);
+  simulator.setup();
+  const auto s = simulator.run();
+  ok           = ok && s.exit_code == 0;
+  std::printf("inflation: exit code %d, %u steps\n", s.exit_code, s.n_steps);
+
+  const auto &h = s.last_residual_history;
+  // Order as in tests/tangent_and_newton: log(r_{k+1}/r_0) / log(r_k/r_0)
+  // over the last two iterations.
+  const std::size_t n = h.size();
+  const double      rate =
+    n >= 3 ? std::log(h[n - 1] / h[0]) / std::log(h[n - 2] / h[0]) : 0.;
+  std::printf("last step: observed Newton order %s 1.8\n",
+              rate >= 1.8 ? ">=" : "<");
+  if (rate < 1.8)
+    {
+      std::printf("  residuals:");
+      for (const double r : h)
+        std::printf(" %.3e", r);
+      std::printf(", order %.2f\n", rate);
+    }
+  ok = ok && rate >= 1.8;
+
+  double imbalance = 0.;
+  for (unsigned int c = 0; c < 3; ++c)
+    imbalance += std::pow(s.reaction[c] + s.applied_load[c], 2);
+  imbalance = std::sqrt(imbalance) / std::abs(s.applied_load[2]);
+  std::printf("|reactions + applied loads| / |applied vertical load| %s 1e-6\n",
+              imbalance < 1e-6 ? "<" : ">=");
+  ok = ok && imbalance < 1e-6;
+
+  const double R = 0.23, r = 0.03, L = 2., g = 9.81;
+  const double membrane_area =
+    2. * M_PI * R * L + 2. * R * L + 2. * M_PI * r * L;
+  const double plate_area = M_PI * (R * R + r * r);
+  const double weight =
+    (membrane_area * 1e-3 * 1. + 2. * plate_area * 1e-2 * 7850.) * g;
+  ok = pneuma_test::check("vertical load = weight of membrane and plates [N]",
+                          -s.applied_load[2],
+                          weight,
+                          5e-3)
+       && ok;
+
+  // Monitors: 0 seam, 1 bottom of the divider, 2 and 3 the sides.
+  const auto  &u    = s.monitor_displacements;
+  const double hoop = std::abs(u[2][1]);
+  const double asym = std::max(std::abs(u[0][1]), std::abs(u[1][1])) / hoop;
+  std::printf("symmetry: |u_y| on the divider plane / hoop displacement %s "
+              "1e-6 (sides %s)\n",
+              asym < 1e-6 ? "<" : ">=",
+              std::abs(u[2][1] + u[3][1]) < 1e-9 * hoop ? "mirror" : "differ");
+  ok = ok && asym < 1e-6 && std::abs(u[2][1] + u[3][1]) < 1e-9 * hoop;
+
+  const double v1 = s.chambers[0].volume, v2 = s.chambers[1].volume;
+  std::printf("halves 1a and 1b: |V1 - V2| / V1 %s 1e-9\n",
+              std::abs(v1 - v2) < 1e-9 * v1 ? "<" : ">=");
+  ok = ok && std::abs(v1 - v2) < 1e-9 * v1;
+  return ok ? 0 : 1;
+}
