@@ -5,7 +5,8 @@ Usage: scripts/plot_chambers.py OUTPUT_DIR [OUTPUT_DIR ...] [-o FILE.png]
 
 Reads OUTPUT_DIR/history.csv (columns c<k>_volume, c<k>_gas_volume,
 c<k>_liquid_volume, c<k>_pressure) and draws, like Figure 10 of the source
-paper, the gas and liquid volumes of every chamber (top) and the gauge
+paper, the gas and liquid volumes of every chamber relative to its initial
+volume (top; chambers of very different size share one axis) and the gauge
 pressures (bottom). Several directories (e.g. the same scene with gas and
 with water in chamber 2) are drawn into one figure. Writes
 OUTPUT_DIR/chambers.png unless -o is given.
@@ -48,16 +49,19 @@ def main(argv):
             def col(name):
                 return [float(r[f"c{k}_{name}"]) for r in rows]
             gas, liquid = col("gas_volume"), col("liquid_volume")
+            v0 = col("volume")[0]
             if any(gas):
-                top.plot(t, gas, label=f"{d}: chamber {k} gas")
+                top.plot(t, [v / v0 for v in gas],
+                         label=f"{d}: chamber {k} gas")
             if any(liquid):
-                top.plot(t, liquid, "--", label=f"{d}: chamber {k} liquid")
+                top.plot(t, [v / v0 for v in liquid], "--",
+                         label=f"{d}: chamber {k} liquid")
             bottom.plot(t, [p / 1e5 for p in col("pressure")],
                         label=f"{d}: chamber {k}")
             k += 1
         if k == 1:
             sys.exit(f"plot_chambers: {d}/history.csv has no chamber columns")
-    top.set_ylabel("volume [m³]")
+    top.set_ylabel("volume / initial chamber volume")
     bottom.set_ylabel("gauge gas pressure [bar]")
     bottom.set_xlabel("pseudo time")
     for ax in (top, bottom):

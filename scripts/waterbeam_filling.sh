@@ -27,5 +27,5 @@ common=(--set "Load stepping/Stage end times=1, 2"
   --set "Chambers/Chamber 3/Gas/Seal time=-1" \
   --set "Chambers/Chamber 3/Liquid/Volume/Function expression=0.005*min(max(t-1,0),1)" \
   --set "Output/Directory=$out/water" "$@" | tee "$out/water.log" | grep -E "^(Step|pneuma)"
-python3 "$root/scripts/plot_chambers.py" "$out/gas" "$out/water" -o "$out/chambers.png"
+/usr/bin/python3 "$root/scripts/plot_chambers.py" "$out/gas" "$out/water" -o "$out/chambers.png"
 echo "written: $out/gas, $out/water, $out/chambers.png"

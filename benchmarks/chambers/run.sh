@@ -6,7 +6,12 @@
 #      pR/(mu H) at l = 2 (reference 0.984375);
 #   2. V5 tank (Q2): error of the level h (reference 0.61148 m) and of w0
 #      (48.28 mm);
-#   3. cost: the sphere up to p = 1.2 mu H/R by a chamber with prescribed
+#   3. the waterbeam filling (parameter_files/waterbeam_filling.prm, water
+#      case of scripts/waterbeam_filling.sh) on Gmsh meshes n = 6, 12, 24:
+#      no closed-form reference; the level, chamber 1's volume and the tube's
+#      top deflection are compared with the finest mesh (observed order from
+#      the three);
+#   4. cost: the sphere up to p = 1.2 mu H/R by a chamber with prescribed
 #      pressure, by a chamber with prescribed volume (same path) and by a
 #      plain follower pressure (Loads/Pressure), at the finest size.
 # Usage: benchmarks/chambers/run.sh   (from anywhere; builds if needed)
@@ -51,6 +56,49 @@ for r in 2 3 4; do
     "$(awk -v w="$w" 'BEGIN{print -1000*w}')" \
     "$(awk -v w="$w" 'BEGIN{print (-w-0.04828)/0.04828}')"
 done
+echo
+echo "## Waterbeam filling, water case (Q1, Gmsh meshes n = 6, 12, 24)"
+echo "| n | cells | dofs | steps | Newton its | its/step | wall s | peak MB | level h [m] | V chamber 1 [m³] | tube top u_z [mm] |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|"
+mkdir -p out
+for n in 6 12 24; do
+  gmsh -2 -format msh22 -setnumber n "$n" "$root/meshes/waterbeam.geo" \
+    -o "out/waterbeam_$n.msh" > /dev/null
+  read -r wall mb < <(measure "$root/parameter_files/waterbeam_filling.prm" \
+    --set "Geometry/Mesh file=out/waterbeam_$n.msh" \
+    --set "Load stepping/Stage end times=1, 2" \
+    --set "Load stepping/Initial increment=0.125" \
+    --set "Load stepping/Maximum increment=0.125" \
+    --set "Chambers/Chamber 3/Filling=liquid and gas" \
+    --set "Chambers/Chamber 3/Gas/Seal time=-1" \
+    --set "Chambers/Chamber 3/Liquid/Volume/Function expression=0.005*min(max(t-1,0),1)" \
+    --set "Output/Write VTU=false" --set "Output/Directory=out/waterbeam")
+  /usr/bin/python3 - "$n" "$wall" "$mb" out/waterbeam >> out/waterbeam_rows.txt <<'PY'
+import csv, json, sys
+n, wall, mb, d = sys.argv[1:5]
+s = json.load(open(f"{d}/summary.json"))
+r = list(csv.DictReader(open(f"{d}/history.csv")))[-1]
+print(n, s["cells"], s["dofs"], s["steps"], s["newton_iterations"], wall, mb,
+      r["c3_level"], r["c1_volume"], float(r["m4_uz"]) * 1e3)
+PY
+done
+/usr/bin/python3 - out/waterbeam_rows.txt <<'PY'
+import math, sys
+rows = [l.split() for l in open(sys.argv[1])]
+ref = rows[-1]
+for r in rows:
+    print(f"| {r[0]} | {r[1]} | {r[2]} | {r[3]} | {r[4]} | {int(r[4])/int(r[3]):.1f} | {r[5]} | {r[6]} "
+          f"| {float(r[7]):.6f} | {float(r[8]):.6f} | {float(r[9]):.4f} |")
+names = ["level h", "V chamber 1", "tube top u_z"]
+print()
+print("| quantity | n=6 - n=24 | n=12 - n=24 | observed order (h halved twice) |")
+print("|---|---|---|---|")
+for k, name in zip((7, 8, 9), names):
+    a, b, c = (float(r[k]) for r in rows)
+    order = math.log(abs((a - b) / (b - c))) / math.log(2) if b != c else float("nan")
+    print(f"| {name} | {a - c:+.3e} | {b - c:+.3e} | {order:.2f} |")
+PY
+rm -f out/waterbeam_rows.txt
 echo
 echo "## Cost of the chamber terms (sphere, Q2, 4 refinements, to p = 1.2 mu H/R)"
 echo "| run | Newton its | wall s | assembly s | linear solve s |"
