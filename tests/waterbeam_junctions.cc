@@ -12,7 +12,12 @@
 //    steel plates (the polygonal caps are 0.3 % smaller than the discs:
 //    5e-3); the structure stays symmetric about the divider plane
 //    (|u_y| at the seam and the divider's bottom line below 1e-6 of the
-//    hoop displacement); the connected halves 1a and 1b keep equal volumes.
+//    hoop displacement); the connected halves 1a and 1b keep equal volumes;
+//  - the water case (scripts/waterbeam_filling.sh): 0.005 m^3 of water
+//    pumped into the small tube under 1 bar of gas in a second stage: the
+//    liquid volume is held (1e-9), the gas volume is the tube's volume less
+//    the water (1e-9), the added vertical reaction is the water's weight
+//    (1e-6), and chamber 1, sealed, keeps p V^1.4 (1e-8).
 
 #include "test_paths.h"
 #include "test_tools.h"
@@ -116,5 +121,63 @@ main(int argc, char **argv)
   std::printf("halves 1a and 1b: |V1 - V2| / V1 %s 1e-9\n",
               std::abs(v1 - v2) < 1e-9 * v1 ? "<" : ">=");
   ok = ok && std::abs(v1 - v2) < 1e-9 * v1;
+
+  // Water case.
+  prm.enter_subsection("Load stepping");
+  prm.set("Stage end times", "1, 2");
+  prm.leave_subsection();
+  prm.enter_subsection("Chambers");
+  prm.enter_subsection("Chamber 3");
+  prm.set("Filling", "liquid and gas");
+  prm.enter_subsection("Gas");
+  prm.set("Seal time", "-1");
+  prm.leave_subsection();
+  prm.enter_subsection("Liquid");
+  prm.enter_subsection("Volume");
+  prm.set("Function expression", "0.005*min(max(t-1,0),1)");
+  prm.leave_subsection();
+  prm.leave_subsection();
+  prm.leave_subsection();
+  prm.leave_subsection();
+  pneuma::Simulator water(MPI_COMM_WORLD);
+  water.parse_parameters(prm);
+  water.setup();
+  const auto w = water.run();
+  ok = ok && w.exit_code == 0;
+  std::printf("water case: exit code %d, %u steps\n", w.exit_code, w.n_steps);
+  const auto &tube = w.chambers[2];
+  ok = pneuma_test::check("water case: liquid volume [m^3]",
+                          tube.liquid_volume,
+                          0.005,
+                          1e-9) &&
+       ok;
+  ok = pneuma_test::check("water case: gas volume = tube volume - water",
+                          tube.gas_volume,
+                          tube.volume - 0.005,
+                          1e-9) &&
+       ok;
+  ok = pneuma_test::check("water case: added vertical load = water weight [N]",
+                          w.applied_load[2] - s.applied_load[2],
+                          -0.005 * 1000. * 9.81,
+                          1e-6) &&
+       ok;
+  double imbalance_w = 0.;
+  for (unsigned int c = 0; c < 3; ++c)
+    imbalance_w += std::pow(w.reaction[c] + w.applied_load[c], 2);
+  imbalance_w = std::sqrt(imbalance_w) / std::abs(w.applied_load[2]);
+  std::printf("water case: |reactions + applied loads| / |applied| %s 1e-6\n",
+              imbalance_w < 1e-6 ? "<" : ">=");
+  ok = ok && imbalance_w < 1e-6;
+  const double law =
+    w.chambers[0].absolute_pressure *
+    std::pow(w.chambers[0].volume + w.chambers[1].volume, 1.4) /
+    (s.chambers[0].absolute_pressure *
+     std::pow(s.chambers[0].volume + s.chambers[1].volume, 1.4));
+  ok = pneuma_test::check("water case: sealed chamber 1, p V^1.4 / (p V^1.4 at "
+                          "the seal)",
+                          law,
+                          1.,
+                          1e-8) &&
+       ok;
   return ok ? 0 : 1;
 }
