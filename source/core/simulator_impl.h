@@ -84,6 +84,11 @@ namespace pneuma
     assemble(const solvers::BorderedVector &u,
              solvers::BorderedVector       &residual) override;
     void
+    set_linear_tolerance(const double eta) override
+    {
+      linear_solver.set_forcing(eta);
+    }
+    void
     solve_linear(const double                   shift,
                  const solvers::BorderedVector &rhs,
                  solvers::BorderedVector       &du) override;

@@ -1,4 +1,5 @@
 #include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_solver.h>
 
 #include <pneuma/solvers/linear_solver.h>
@@ -9,6 +10,7 @@
 #include <Epetra_LinearProblem.h>
 
 #include <iostream>
+#include <map>
 #include <sstream>
 
 namespace pneuma
@@ -30,10 +32,31 @@ namespace pneuma
                         Patterns::Selection("Amesos_Mumps|Amesos_Klu"),
                         "Package of the direct solver.");
       prm.declare_entry("MUMPS ordering",
-                        "metis",
-                        Patterns::Selection("metis|amd|auto"),
-                        "Fill-reducing ordering of MUMPS (ICNTL(7)): nested "
-                        "dissection (metis) suits surface meshes best.");
+                        "amf",
+                        Patterns::Selection("metis|amd|amf|qamd|scotch|pord|auto"),
+                        "Fill-reducing ordering of MUMPS (ICNTL(7)). amf "
+                        "(approximate minimum fill) is the fastest on "
+                        "membrane meshes: the analysis phase with metis costs "
+                        "several numeric factorizations "
+                        "(benchmarks/inflated_cylinder/results.md).");
+      prm.declare_entry("Reuse factorization",
+                        "false",
+                        Patterns::Bool(),
+                        "Direct solver: solve later Newton systems by GMRES "
+                        "preconditioned by an earlier factorization, and "
+                        "factorize afresh only when that needs more than "
+                        "'Reuse iterations' iterations.");
+      prm.declare_entry("Reuse iterations",
+                        "8",
+                        Patterns::Integer(1, 100),
+                        "GMRES iterations allowed on an earlier "
+                        "factorization before the tangent is factorized "
+                        "again.");
+      prm.declare_entry("Reuse tolerance",
+                        "1e-9",
+                        Patterns::Double(1e-16, 1e-2),
+                        "GMRES stopping tolerance relative to |b| for "
+                        "solves on an earlier factorization.");
       prm.declare_entry("Relative tolerance",
                         "1e-10",
                         Patterns::Double(1e-16, 1.),
@@ -54,6 +77,9 @@ namespace pneuma
       ordering           = prm.get("MUMPS ordering");
       relative_tolerance = prm.get_double("Relative tolerance");
       max_iterations     = prm.get_integer("Maximum iterations");
+      reuse_factorization = prm.get_bool("Reuse factorization");
+      reuse_iterations    = prm.get_integer("Reuse iterations");
+      reuse_tolerance     = prm.get_double("Reuse tolerance");
       prm.leave_subsection();
     }
 
@@ -67,6 +93,7 @@ namespace pneuma
       problem.reset();
       amg.reset();
       factored_matrix = nullptr;
+      stale           = false;
     }
 
     void
@@ -97,28 +124,30 @@ namespace pneuma
               amesos_parameters.set("PrintStatus", false);
               direct->SetParameters(amesos_parameters);
               if (auto *mumps = dynamic_cast<Amesos_Mumps *>(direct.get()))
-                mumps->SetICNTL(7,
-                                ordering == "metis" ? 5
-                                : ordering == "amd" ? 0
-                                                    : 7);
+                {
+                  const std::map<std::string, int> icntl7 = {{"amd", 0},
+                                                             {"amf", 2},
+                                                             {"scotch", 3},
+                                                             {"pord", 4},
+                                                             {"metis", 5},
+                                                             {"qamd", 6},
+                                                             {"auto", 7}};
+                  mumps->SetICNTL(7, icntl7.at(ordering));
+                }
               AssertThrow(direct->SymbolicFactorization() == 0,
                           ExcMessage("symbolic factorization failed"));
               factored_matrix = &A.trilinos_matrix();
+              numeric_factorization();
+              return;
             }
-          // Amesos prints MUMPS failures on std::cerr itself; the caller
-          // reports them (and recovers), so they are kept off the streams.
-          std::ostringstream sink;
-          auto *const        err_buf = std::cerr.rdbuf(sink.rdbuf());
-          const int          status  = direct->NumericFactorization();
-          std::cerr.rdbuf(err_buf);
-          if (status != 0)
+          // The factors of an earlier tangent serve solve() until GMRES on
+          // them needs too many iterations.
+          if (reuse_factorization && factorizations > 0)
             {
-              // MUMPS is left in an error state: start afresh next time.
-              reset();
-              AssertThrow(false,
-                          ExcMessage("numeric factorization failed (singular "
-                                     "tangent)"));
+              stale = true;
+              return;
             }
+          numeric_factorization();
           return;
         }
 
@@ -132,6 +161,36 @@ namespace pneuma
       amg->initialize(A, data);
     }
 
+    void
+    LinearSolver::numeric_factorization()
+    {
+      // Amesos prints MUMPS failures on std::cerr itself; the caller
+      // reports them (and recovers), so they are kept off the streams.
+      std::ostringstream sink;
+      auto *const        err_buf = std::cerr.rdbuf(sink.rdbuf());
+      const int          status  = direct->NumericFactorization();
+      std::cerr.rdbuf(err_buf);
+      if (status != 0)
+        {
+          // MUMPS is left in an error state: start afresh next time.
+          reset();
+          AssertThrow(false,
+                      ExcMessage("numeric factorization failed (singular "
+                                 "tangent)"));
+        }
+      ++factorizations;
+      stale = false;
+    }
+
+    void
+    LinearSolver::direct_solve(LA::Vector &x, const LA::Vector &b)
+    {
+      problem->SetLHS(&x.trilinos_vector());
+      problem->SetRHS(const_cast<Epetra_MultiVector *>(
+        static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));
+      AssertThrow(direct->Solve() == 0, ExcMessage("direct solve failed"));
+    }
+
     unsigned int
     LinearSolver::solve(const LA::SparseMatrix &A,
                         LA::Vector             &x,
@@ -140,16 +199,50 @@ namespace pneuma
       if (solver_type == "direct")
         {
           Assert(direct, ExcMessage("factorize() first"));
-          problem->SetLHS(&x.trilinos_vector());
-          problem->SetRHS(const_cast<Epetra_MultiVector *>(
-            static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));
-          AssertThrow(direct->Solve() == 0, ExcMessage("direct solve failed"));
+          if (stale)
+            {
+              // GMRES on the current tangent, preconditioned by the
+              // factors of an earlier one.
+              struct EarlierFactors
+              {
+                LinearSolver *solver;
+                void
+                vmult(LA::Vector &dst, const LA::Vector &src) const
+                {
+                  solver->direct_solve(dst, src);
+                }
+              } preconditioner{this};
+              SolverControl control(reuse_iterations,
+                                    std::max(reuse_tolerance, forcing) *
+                                      b.l2_norm(),
+                                    false,
+                                    false);
+              SolverGMRES<LA::Vector> gmres(
+                control,
+                SolverGMRES<LA::Vector>::AdditionalData(reuse_iterations + 2,
+                                                        true));
+              LA::Vector y(x);
+              y = 0.;
+              try
+                {
+                  gmres.solve(A, y, b, preconditioner);
+                  x = y;
+                  ++reused_solves;
+                  return control.last_step();
+                }
+              catch (const SolverControl::NoConvergence &)
+                {
+                  // The tangent has moved too far: factorize it.
+                  numeric_factorization();
+                }
+            }
+          direct_solve(x, b);
           return 0;
         }
 
       Assert(amg, ExcMessage("factorize() first"));
       SolverControl                                 control(max_iterations,
-                            relative_tolerance * b.l2_norm(),
+                            std::max(relative_tolerance, forcing) * b.l2_norm(),
                             false,
                             false);
       TrilinosWrappers::SolverGMRES::AdditionalData gmres_data(false, 200);

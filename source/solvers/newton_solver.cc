@@ -131,6 +131,10 @@ namespace pneuma
           residual *= -1.;
           try
             {
+              // Forcing term 1e-2 |r|/|r_ref|: the linear error stays
+              // below the quadratic term of the Newton step.
+              problem.set_linear_tolerance(
+                std::min(1e-3, 1e-2 * r_norm / r_ref));
               problem.solve_linear(shift, residual, du);
             }
           catch (const std::exception &e)

@@ -5,6 +5,13 @@
  * The linear solver of each Newton step: a parallel direct solver (MUMPS
  * through Trilinos Amesos, the default) or AMG-preconditioned GMRES
  * (Trilinos ML) for large meshes.
+ *
+ * The direct solver can reuse a factorization across Newton iterations
+ * (off by default): near convergence the tangent barely changes, and a few
+ * GMRES iterations preconditioned by the factors of an earlier tangent
+ * solve the current system to the Newton forcing term. On membrane meshes
+ * a numeric factorization costs only about six substitutions, so this does
+ * not pay there (doc/theory.md §6); it may for stiffer, denser systems.
  */
 
 #include <deal.II/base/parameter_handler.h>
@@ -62,11 +69,36 @@ namespace pneuma
       unsigned int
       solve(const LA::SparseMatrix &A, LA::Vector &x, const LA::Vector &b);
 
+      /**
+       * Relative tolerance that the next solves on an earlier
+       * factorization must reach (an inexact Newton forcing term); never
+       * below "Reuse tolerance".
+       */
+      void
+      set_forcing(const double eta)
+      {
+        forcing = eta;
+      }
+
       /// "direct" or "amg".
       const std::string &
       type() const
       {
         return solver_type;
+      }
+
+      /// Numeric factorizations done so far (direct solver).
+      unsigned int
+      n_factorizations() const
+      {
+        return factorizations;
+      }
+
+      /// Solves done by GMRES on an earlier factorization (direct solver).
+      unsigned int
+      n_reused_solves() const
+      {
+        return reused_solves;
       }
 
     private:
@@ -81,6 +113,24 @@ namespace pneuma
       std::unique_ptr<Epetra_LinearProblem> problem;
       std::unique_ptr<Amesos_BaseSolver>    direct;
       const void                           *factored_matrix = nullptr;
+      // Factorization reuse: factorize() keeps the numeric factors of an
+      // earlier tangent and solve() runs GMRES on the current one,
+      // preconditioned by them; when GMRES needs more than reuse_iterations
+      // the tangent has moved too far and is factorized afresh.
+      bool         reuse_factorization = false;
+      unsigned int reuse_iterations    = 8;
+      double       reuse_tolerance     = 1e-9;
+      double       forcing             = 0.;
+      bool         stale               = false;
+      unsigned int factorizations      = 0;
+      unsigned int reused_solves       = 0;
+
+      /// Numeric factorization of the matrix bound to the Amesos problem.
+      void
+      numeric_factorization();
+      /// x = (factored matrix)^-1 b.
+      void
+      direct_solve(LA::Vector &x, const LA::Vector &b);
       std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
     };
   } // namespace solvers

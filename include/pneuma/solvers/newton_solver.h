@@ -55,6 +55,13 @@ namespace pneuma
       /// Norm of the external load vector, for the residual reference.
       virtual double
       load_norm() = 0;
+      /// Forcing term of an inexact Newton step: the linear solve may stop
+      /// at |J du - rhs| <= eta |rhs| (iterative solves only).
+      virtual void
+      set_linear_tolerance(const double eta)
+      {
+        (void)eta;
+      }
     };
 
     /// Convergence history of one Newton solve.
