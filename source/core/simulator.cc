@@ -223,6 +223,62 @@ namespace pneuma
           }
       }
     linear_solver.set_constant_modes(modes);
+
+    // AMG near-null space of a free membrane: the three translations and
+    // three rotations about the centroid of the reference surface, on the
+    // membrane dofs (cable dofs get the translations only).
+    if (has_membrane() && linear_solver.type() == "amg")
+      {
+        std::map<types::global_dof_index, Point<3>> support;
+        DoFTools::map_dofs_to_support_points(*mapping, dof_handler, support);
+        Point<3> centre;
+        double   count = 0.;
+        for (const auto &[i, x] : support)
+          if (membrane_owned.is_element(i))
+            {
+              centre += x;
+              count += 1.;
+            }
+        for (unsigned int d = 0; d < 3; ++d)
+          centre[d] = Utilities::MPI::sum(centre[d], comm);
+        centre /= std::max(1., Utilities::MPI::sum(count, comm));
+        const auto &fe = dof_handler.get_fe();
+        std::vector<unsigned int> component(n_membrane, 0);
+        {
+          std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+          for (const auto &cell : dof_handler.active_cell_iterators())
+            if (!cell->is_artificial())
+              {
+                cell->get_dof_indices(dofs);
+                for (unsigned int k = 0; k < dofs.size(); ++k)
+                  component[dofs[k]] = fe.system_to_component_index(k).first;
+              }
+        }
+        std::vector<std::vector<double>> rigid(
+          6, std::vector<double>(locally_owned.n_elements(), 0.));
+        for (unsigned int k = 0; k < locally_owned.n_elements(); ++k)
+          {
+            const auto i = locally_owned.nth_index_in_set(k);
+            if (i >= n_membrane)
+              {
+                const int c = cable_system.translation_component(i);
+                if (c >= 0)
+                  rigid[c][k] = 1.;
+                continue;
+              }
+            const unsigned int c = component[i];
+            const Tensor<1, 3> r = support.at(i) - centre;
+            rigid[c][k]          = 1.;
+            // Rotation about axis a: (e_a x r)_c.
+            for (unsigned int a = 0; a < 3; ++a)
+              {
+                Tensor<1, 3> e;
+                e[a]            = 1.;
+                rigid[3 + a][k] = cross_product_3d(e, r)[c];
+              }
+          }
+        linear_solver.set_rigid_body_modes(rigid);
+      }
     linear_solver.reset();
   }
 
@@ -769,6 +825,8 @@ namespace pneuma
     summary.final_time      = current_time;
     refresh_contact(); // the reports of the last converged state
     summary.n_linear_solves = n_linear_solves;
+    summary.n_factorizations    = linear_solver.n_factorizations();
+    summary.n_krylov_iterations = linear_solver.n_krylov_iterations();
     ghosted                 = solution;
     // The last converged state is always written.
     if (output.write_vtu

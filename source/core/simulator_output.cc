@@ -384,6 +384,8 @@ namespace pneuma
          << "  \"cutbacks\": " << summary.n_cutbacks << ",\n"
          << "  \"newton_iterations\": " << summary.n_newton_iterations << ",\n"
          << "  \"linear_solves\": " << summary.n_linear_solves << ",\n"
+         << "  \"factorizations\": " << summary.n_factorizations << ",\n"
+         << "  \"krylov_iterations\": " << summary.n_krylov_iterations << ",\n"
          << "  \"final_time\": " << summary.final_time << ",\n"
          << "  \"initial_volume\": " << summary.initial_volume << ",\n"
          << "  \"volume\": " << summary.volume << ",\n"

@@ -8,6 +8,8 @@
 #include <Amesos_BaseSolver.h>
 #include <Amesos_Mumps.h>
 #include <Epetra_LinearProblem.h>
+#include <Epetra_MultiVector.h>
+#include <Teuchos_ParameterList.hpp>
 
 #include <iostream>
 #include <map>
@@ -104,6 +106,13 @@ namespace pneuma
     }
 
     void
+    LinearSolver::set_rigid_body_modes(
+      const std::vector<std::vector<double>> &modes)
+    {
+      rigid_body_modes = modes;
+    }
+
+    void
     LinearSolver::factorize(const LA::SparseMatrix &A)
     {
       if (solver_type == "direct")
@@ -158,7 +167,27 @@ namespace pneuma
       data.aggregation_threshold = 0.02;
       data.constant_modes        = constant_modes;
       amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-      amg->initialize(A, data);
+      if (rigid_body_modes.empty())
+        {
+          amg->initialize(A, data);
+          return;
+        }
+      // Rigid-body near-null space: ML aggregates with all six modes of a
+      // free membrane (translations alone leave the rotations, which a
+      // membrane resists no better, to the smoother).
+      Teuchos::ParameterList              list;
+      std::unique_ptr<Epetra_MultiVector> unused;
+      data.set_parameters(list, unused, A);
+      const std::size_t n = rigid_body_modes.front().size();
+      null_space.resize(n * rigid_body_modes.size());
+      for (std::size_t m = 0; m < rigid_body_modes.size(); ++m)
+        std::copy(rigid_body_modes[m].begin(),
+                  rigid_body_modes[m].end(),
+                  null_space.begin() + m * n);
+      list.set("null space: type", "pre-computed");
+      list.set("null space: dimension", int(rigid_body_modes.size()));
+      list.set("null space: vectors", null_space.data());
+      amg->initialize(A, list);
     }
 
     void
@@ -228,6 +257,7 @@ namespace pneuma
                   gmres.solve(A, y, b, preconditioner);
                   x = y;
                   ++reused_solves;
+                  krylov_iterations += control.last_step();
                   return control.last_step();
                 }
               catch (const SolverControl::NoConvergence &)
@@ -248,6 +278,7 @@ namespace pneuma
       TrilinosWrappers::SolverGMRES::AdditionalData gmres_data(false, 200);
       TrilinosWrappers::SolverGMRES                 solver(control, gmres_data);
       solver.solve(A, x, b, *amg);
+      krylov_iterations += control.last_step();
       return control.last_step();
     }
   } // namespace solvers

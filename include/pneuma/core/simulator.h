@@ -73,7 +73,8 @@ namespace pneuma
     int          exit_code = success;
     std::string  message;
     unsigned int n_cells = 0, n_cable_cells = 0, n_dofs = 0, n_steps = 0, n_cutbacks = 0,
-                 n_newton_iterations = 0, n_linear_solves = 0;
+                 n_newton_iterations = 0, n_linear_solves = 0,
+                 n_factorizations = 0, n_krylov_iterations = 0;
     double final_time = 0., wall_seconds = 0.;
     /// Displacement at each monitor point at the end of the run.
     std::vector<std::array<double, 3>> monitor_displacements;

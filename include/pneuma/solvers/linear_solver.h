@@ -45,6 +45,14 @@ namespace pneuma
       void
       set_constant_modes(const std::vector<std::vector<bool>> &modes);
 
+      /**
+       * Near-null space for AMG as values over the locally owned dofs (in
+       * their order): the three translations and three rotations of a
+       * membrane. Replaces the constant modes when given.
+       */
+      void
+      set_rigid_body_modes(const std::vector<std::vector<double>> &modes);
+
       LinearSolver();
       ~LinearSolver();
 
@@ -94,6 +102,14 @@ namespace pneuma
         return factorizations;
       }
 
+      /// GMRES iterations so far (AMG, or solves on an earlier
+      /// factorization).
+      unsigned int
+      n_krylov_iterations() const
+      {
+        return krylov_iterations;
+      }
+
       /// Solves done by GMRES on an earlier factorization (direct solver).
       unsigned int
       n_reused_solves() const
@@ -106,6 +122,10 @@ namespace pneuma
       double                         relative_tolerance = 1e-10;
       unsigned int                   max_iterations     = 1000;
       std::vector<std::vector<bool>> constant_modes;
+      std::vector<std::vector<double>> rigid_body_modes;
+      /// Contiguous storage of rigid_body_modes handed to ML (it keeps the
+      /// pointer while the preconditioner lives).
+      std::vector<double> null_space;
       std::string                    ordering;
       // Direct solver state: the symbolic factorization (fill-reducing
       // ordering) is computed once per matrix and reused by every Newton
@@ -124,6 +144,7 @@ namespace pneuma
       bool         stale               = false;
       unsigned int factorizations      = 0;
       unsigned int reused_solves       = 0;
+      unsigned int krylov_iterations   = 0;
 
       /// Numeric factorization of the matrix bound to the Amesos problem.
       void
