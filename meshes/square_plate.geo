@@ -1,6 +1,8 @@
 // A 1 m x 1 m flat membrane in the plane z = 0, meshed with quadrilaterals.
 // Physical surface 0 -> material id 0; physical curve 1 (all edges) ->
-// boundary id 1. Regenerate: gmsh -2 -format msh2 square_plate.geo
+// boundary id 1. Regenerate: gmsh -2 -format msh2 square_plate.geo; the MSH 4.1
+// copy read by tests/gmsh_square_v41: gmsh -2 -format msh41 square_plate.geo
+// -o square_plate_v41.msh
 L = 1.0;
 n = 9;
 Point(1) = {-L/2, -L/2, 0};

@@ -56,5 +56,12 @@ check "$c" 1 "Chambers/Chamber 1/Gas/Control" --set "Chambers/Chamber 1/Filling=
 check "$c" 1 "Chambers/Chamber 1/Liquid/Volume: the liquid volume 1 m^3 at t = 0 does not fit" --set "Chambers/Chamber 1/Filling=liquid" --set "Chambers/Chamber 1/Liquid/Volume/Function expression=1"
 check "$c" 2 "does not fit" --set "Chambers/Chamber 1/Filling=liquid" --set "Chambers/Chamber 1/Liquid/Volume/Function expression=t"
 check "$c" 0 "finished"
+g=(--set "Geometry/Type=gmsh" --set "Boundary conditions/Rigid regions=" --set "Boundary conditions/Fixed points=")
+check "$dir/valid.prm" 1 "triangles.msh': holds triangles" "${g[@]}" --set "Geometry/Mesh file=$dir/triangles.msh"
+check "$dir/valid.prm" 1 "binary.msh': is a binary Gmsh file" "${g[@]}" --set "Geometry/Mesh file=$dir/binary.msh"
+check "$dir/valid.prm" 1 "version3.msh': has the unsupported MSH version" "${g[@]}" --set "Geometry/Mesh file=$dir/version3.msh"
+check "$dir/valid.prm" 1 "truncated.msh': ends before the last node" "${g[@]}" --set "Geometry/Mesh file=$dir/truncated.msh"
+check "$dir/valid.prm" 1 "not_a_mesh.msh': is not a Gmsh mesh" "${g[@]}" --set "Geometry/Mesh file=$dir/not_a_mesh.msh"
+check "$dir/valid.prm" 1 "unknown_node.msh': an element refers to the unknown node 9" "${g[@]}" --set "Geometry/Mesh file=$dir/unknown_node.msh"
 if [ $fail -eq 0 ]; then echo "all bad inputs rejected cleanly"; fi
 exit $fail

@@ -153,8 +153,7 @@ namespace pneuma
             }
           else if (type == gmsh_triangle || type == gmsh_triangle6)
             parser.fail("holds triangles; pneuma needs quadrilaterals "
-                        "(Gmsh: Recombine Surface, or -algo with "
-                        "Mesh.RecombineAll = 1)");
+                        "(Gmsh: Recombine Surface, or Mesh.RecombineAll = 1)");
           else if (type == gmsh_quad9 || type == gmsh_quad8)
             parser.fail("holds second-order quadrilaterals; save a "
                         "first-order mesh (the degree is set by "
@@ -313,8 +312,12 @@ namespace pneuma
       else if (version >= 4. && version < 5.)
         read_version_4(parser, collector);
       else
-        parser.fail("has the unsupported MSH version " + std::to_string(version)
-                    + " (use 2.2 or 4.1)");
+        {
+          std::ostringstream v;
+          v << version;
+          parser.fail("has the unsupported MSH version " + v.str()
+                      + " (use 2.2 or 4.1)");
+        }
       return data;
     }
 
