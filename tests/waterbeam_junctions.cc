@@ -87,13 +87,20 @@ main(int argc, char **argv)
     }
   ok = ok && rate >= 1.8;
 
-  double imbalance = 0.;
-  for (unsigned int c = 0; c < 3; ++c)
-    imbalance += std::pow(s.reaction[c] + s.applied_load[c], 2);
-  imbalance = std::sqrt(imbalance) / std::abs(s.applied_load[2]);
-  std::printf("|reactions + applied loads| / |applied vertical load| %s 1e-6\n",
-              imbalance < 1e-6 ? "<" : ">=");
-  ok = ok && imbalance < 1e-6;
+  // |reactions + applied loads| / |applied vertical load| below 1e-6.
+  const auto balanced = [](const pneuma::RunSummary &run,
+                           const std::string        &name) {
+    double imbalance = 0.;
+    for (unsigned int c = 0; c < 3; ++c)
+      imbalance += std::pow(run.reaction[c] + run.applied_load[c], 2);
+    imbalance = std::sqrt(imbalance) / std::abs(run.applied_load[2]);
+    std::printf("%s|reactions + applied loads| / |applied vertical load| %s "
+                "1e-6\n",
+                name.c_str(),
+                imbalance < 1e-6 ? "<" : ">=");
+    return imbalance < 1e-6;
+  };
+  ok = balanced(s, "") && ok;
 
   const double R = 0.23, r = 0.03, L = 2., g = 9.81;
   const double membrane_area =
@@ -143,41 +150,35 @@ main(int argc, char **argv)
   water.parse_parameters(prm);
   water.setup();
   const auto w = water.run();
-  ok = ok && w.exit_code == 0;
+  ok           = ok && w.exit_code == 0;
   std::printf("water case: exit code %d, %u steps\n", w.exit_code, w.n_steps);
   const auto &tube = w.chambers[2];
-  ok = pneuma_test::check("water case: liquid volume [m^3]",
+  ok               = pneuma_test::check("water case: liquid volume [m^3]",
                           tube.liquid_volume,
                           0.005,
-                          1e-9) &&
-       ok;
+                          1e-9)
+       && ok;
   ok = pneuma_test::check("water case: gas volume = tube volume - water",
                           tube.gas_volume,
                           tube.volume - 0.005,
-                          1e-9) &&
-       ok;
+                          1e-9)
+       && ok;
   ok = pneuma_test::check("water case: added vertical load = water weight [N]",
                           w.applied_load[2] - s.applied_load[2],
                           -0.005 * 1000. * 9.81,
-                          1e-6) &&
-       ok;
-  double imbalance_w = 0.;
-  for (unsigned int c = 0; c < 3; ++c)
-    imbalance_w += std::pow(w.reaction[c] + w.applied_load[c], 2);
-  imbalance_w = std::sqrt(imbalance_w) / std::abs(w.applied_load[2]);
-  std::printf("water case: |reactions + applied loads| / |applied| %s 1e-6\n",
-              imbalance_w < 1e-6 ? "<" : ">=");
-  ok = ok && imbalance_w < 1e-6;
+                          1e-6)
+       && ok;
+  ok = balanced(w, "water case: ") && ok;
   const double law =
-    w.chambers[0].absolute_pressure *
-    std::pow(w.chambers[0].volume + w.chambers[1].volume, 1.4) /
-    (s.chambers[0].absolute_pressure *
-     std::pow(s.chambers[0].volume + s.chambers[1].volume, 1.4));
+    w.chambers[0].absolute_pressure
+    * std::pow(w.chambers[0].volume + w.chambers[1].volume, 1.4)
+    / (s.chambers[0].absolute_pressure
+       * std::pow(s.chambers[0].volume + s.chambers[1].volume, 1.4));
   ok = pneuma_test::check("water case: sealed chamber 1, p V^1.4 / (p V^1.4 at "
                           "the seal)",
                           law,
                           1.,
-                          1e-8) &&
-       ok;
+                          1e-8)
+       && ok;
   return ok ? 0 : 1;
 }

@@ -79,6 +79,16 @@ namespace pneuma
           return value;
         }
 
+        /// Three coordinates from @p s.
+        Point<3>
+        read_point(std::istringstream &s)
+        {
+          Point<3> x;
+          for (unsigned int d = 0; d < 3; ++d)
+            x[d] = read<double>(s, "a node coordinate");
+          return x;
+        }
+
         const std::string file, parameter;
 
       private:
@@ -174,11 +184,8 @@ namespace pneuma
                 {
                   auto       s   = parser.next("the last node");
                   const long tag = parser.read<long>(s, "a node tag");
-                  Point<3>   x;
-                  for (unsigned int d = 0; d < 3; ++d)
-                    x[d] = parser.read<double>(s, "a node coordinate");
                   collector.node_index[tag] = collector.data.vertices.size();
-                  collector.data.vertices.push_back(x);
+                  collector.data.vertices.push_back(parser.read_point(s));
                 }
             }
           else if (section == "Elements")
@@ -244,7 +251,7 @@ namespace pneuma
                   auto s = parser.next("a node block");
                   parser.read<int>(s, "a node block's dimension");
                   parser.read<int>(s, "a node block's entity");
-                  const int  parametric = parser.read<int>(s, "parametric");
+                  parser.read<int>(s, "parametric");
                   const long n = parser.read<long>(s, "a node block's size");
                   std::vector<long> tags(n);
                   for (auto &t : tags)
@@ -254,13 +261,11 @@ namespace pneuma
                     }
                   for (const auto t : tags)
                     {
-                      auto     line = parser.next("a node's coordinates");
-                      Point<3> x;
-                      for (unsigned int d = 0; d < 3; ++d)
-                        x[d] = parser.read<double>(line, "a coordinate");
-                      (void)parametric; // parametric (u, v) are ignored
+                      // Parametric (u, v) after x, y, z are ignored.
+                      auto line = parser.next("a node's coordinates");
                       collector.node_index[t] = collector.data.vertices.size();
-                      collector.data.vertices.push_back(x);
+                      collector.data.vertices.push_back(
+                        parser.read_point(line));
                     }
                 }
             }
