@@ -63,5 +63,7 @@ check "$dir/valid.prm" 1 "version3.msh': has the unsupported MSH version" "${g[@
 check "$dir/valid.prm" 1 "truncated.msh': ends before the last node" "${g[@]}" --set "Geometry/Mesh file=$dir/truncated.msh"
 check "$dir/valid.prm" 1 "not_a_mesh.msh': is not a Gmsh mesh" "${g[@]}" --set "Geometry/Mesh file=$dir/not_a_mesh.msh"
 check "$dir/valid.prm" 1 "unknown_node.msh': an element refers to the unknown node 9" "${g[@]}" --set "Geometry/Mesh file=$dir/unknown_node.msh"
+w="$dir/../../parameter_files/waterbeam_filling.prm"
+check "$w" 1 "Adaptive refinement/Cycles: meshes with junction lines" --set "Geometry/Mesh file=$dir/../../meshes/waterbeam.msh" --set "Adaptive refinement/Cycles=1"
 if [ $fail -eq 0 ]; then echo "all bad inputs rejected cleanly"; fi
 exit $fail

@@ -51,6 +51,7 @@ namespace pneuma
                       "reference surface has the same degree.");
     prm.leave_subsection();
     geometry::SceneGenerator::declare_parameters(prm);
+    geometry::AdaptiveRefinement::declare_parameters(prm);
     membrane::MaterialRegions::declare_parameters(prm);
     loads::Loads::declare_parameters(prm);
     loads::BoundaryConditions::declare_parameters(prm);
@@ -72,6 +73,7 @@ namespace pneuma
     s.degree = prm.get_integer("Polynomial degree");
     prm.leave_subsection();
     s.geometry.parse_parameters(prm);
+    s.refinement.parse_parameters(prm);
     s.materials.parse_parameters(prm);
     s.loads.parse_parameters(prm);
     s.boundary_conditions.parse_parameters(prm);
@@ -140,6 +142,13 @@ namespace pneuma
 
     s.setup_system();
     s.boundary_conditions.check_against_mesh(s.dof_handler);
+    // Junction copies are tied vertex by vertex: both sides of a junction
+    // would have to be refined alike.
+    check_input(s.refinement.cycles() == 0 || s.junction_ties.ties.empty(),
+                "Adaptive refinement/Cycles",
+                "meshes with junction lines (more than two cells on a line) "
+                "cannot be refined adaptively yet; refine the Gmsh mesh "
+                "instead");
     if (!s.chamber_parameters.empty())
       s.chamber_assembler.check_chambers();
   }
@@ -300,6 +309,17 @@ namespace pneuma
     if (has_membrane())
       assembler.surface_laplacian(constraints, laplacian);
     cable_system.assemble_regularisation(constraints, laplacian);
+  }
+
+  void
+  Simulator::Impl::refine_mesh()
+  {
+    ghosted = solution;
+    refinement.refine(*mapping, dof_handler, ghosted, triangulation);
+    auto cache = std::make_unique<MappingQCache<2, 3>>(degree);
+    cache->initialize(MappingQ<2, 3>(degree), triangulation);
+    mapping = std::move(cache);
+    setup_system();
   }
 
   IndexSet
@@ -642,7 +662,38 @@ namespace pneuma
   RunSummary
   Simulator::run()
   {
-    return impl->run();
+    Impl &s = *impl;
+    if (s.refinement.cycles() == 0 || !s.has_membrane())
+      return s.run();
+
+    // Convergence study: the load path on each adapted mesh, outputs per
+    // cycle, one table of all cycles.
+    const std::string base = s.output.directory;
+    std::vector<RunSummary::Cycle> cycles;
+    RunSummary                     summary;
+    for (unsigned int cycle = 0; cycle <= s.refinement.cycles(); ++cycle)
+      {
+        if (cycle > 0)
+          {
+            TimerOutput::Scope t(s.timer, "setup");
+            s.refine_mesh();
+          }
+        s.output.directory = base + "/cycle-" + std::to_string(cycle);
+        s.pcout << "Adaptive refinement: cycle " << cycle << std::endl;
+        summary = s.run();
+        cycles.push_back({summary.n_cells,
+                          summary.n_dofs,
+                          summary.n_newton_iterations,
+                          summary.exit_code,
+                          summary.volume,
+                          summary.monitor_displacements});
+        if (summary.exit_code != success)
+          break;
+      }
+    s.output.directory = base;
+    summary.cycles     = cycles;
+    s.write_refinement_table(cycles);
+    return summary;
   }
 
   RunSummary

@@ -10,6 +10,7 @@
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/lac/affine_constraints.h>
 
+#include <pneuma/geometry/adaptive_refinement.h>
 #include <pneuma/cables/cable_parameters.h>
 #include <pneuma/cables/cable_system.h>
 #include <pneuma/chambers/chamber_assembler.h>
@@ -68,6 +69,10 @@ namespace pneuma
     setup_system();
     void
     make_constraints();
+    /// Refine by the error indicator of the current solution and set the
+    /// system up again (adaptive_refinement.h).
+    void
+    refine_mesh();
     /// Masters that dependent dofs refer to (share_constraints.h).
     IndexSet
     shared_masters() const;
@@ -110,6 +115,9 @@ namespace pneuma
     // --- output (simulator_output.cc)
     void
     prepare_output_directory();
+    /// Output/Directory/refinement.csv: one row per refinement cycle.
+    void
+    write_refinement_table(const std::vector<RunSummary::Cycle> &cycles) const;
     void
     write_vtu(const unsigned int step, const double t);
     void
@@ -133,6 +141,7 @@ namespace pneuma
 
     // Parameters.
     geometry::SceneGenerator  geometry;
+    geometry::AdaptiveRefinement refinement;
     membrane::MaterialRegions materials;
     loads::Loads              loads;
     loads::BoundaryConditions boundary_conditions;

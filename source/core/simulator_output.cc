@@ -71,6 +71,29 @@ namespace pneuma
   }
 
   void
+  Simulator::Impl::write_refinement_table(
+    const std::vector<RunSummary::Cycle> &cycles) const
+  {
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      return;
+    std::ofstream table(output.directory + "/refinement.csv");
+    table << "cycle,cells,dofs,newton_iterations,exit_code,volume";
+    for (unsigned int m = 0; m < output.monitor_points.size(); ++m)
+      table << ",m" << m << "_ux,m" << m << "_uy,m" << m << "_uz";
+    table << "\n" << std::setprecision(10);
+    for (unsigned int k = 0; k < cycles.size(); ++k)
+      {
+        const auto &c = cycles[k];
+        table << k << "," << c.n_cells << "," << c.n_dofs << ","
+              << c.n_newton_iterations << "," << c.exit_code << ","
+              << c.volume;
+        for (const auto &u : c.monitor_displacements)
+          table << "," << u[0] << "," << u[1] << "," << u[2];
+        table << "\n";
+      }
+  }
+
+  void
   Simulator::Impl::prepare_output_directory()
   {
     if (Utilities::MPI::this_mpi_process(comm) == 0)

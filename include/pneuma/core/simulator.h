@@ -96,6 +96,16 @@ namespace pneuma
     std::vector<ContactState> contact;
     /// Newton iterations of every converged step.
     std::vector<unsigned int> step_iterations;
+    /// Adaptive refinement: one record per cycle (empty without).
+    struct Cycle
+    {
+      unsigned int                       n_cells = 0, n_dofs = 0,
+                                         n_newton_iterations = 0;
+      int                                exit_code = success;
+      double                             volume    = 0.;
+      std::vector<std::array<double, 3>> monitor_displacements;
+    };
+    std::vector<Cycle> cycles;
   };
 
   /// Result of a finite-difference check of the tangent.

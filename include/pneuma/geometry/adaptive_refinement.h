@@ -1,0 +1,60 @@
+#pragma once
+
+/**
+ * @file
+ * Adaptive refinement for convergence studies: the whole load path is run,
+ * the cells are ranked by Kelly's error indicator of the final displacement
+ * (the jump of its surface gradient across cell edges, weighted by the edge
+ * length: Kelly, Gago, Zienkiewicz, Babuska 1983), a fixed fraction is
+ * refined (p4est keeps neighbours within one level, hanging nodes are
+ * constrained), and the load path is run again on the new mesh. Every
+ * cycle writes its own outputs (doc/user-guide.md "Adaptive refinement").
+ */
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+
+#include <pneuma/core/linear_algebra.h>
+
+namespace pneuma
+{
+  namespace geometry
+  {
+    using namespace dealii;
+
+    /// "Adaptive refinement" subsection and one refinement of the mesh.
+    class AdaptiveRefinement
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+
+      /// Number of refinement cycles after the first run (0: none).
+      unsigned int
+      cycles() const
+      {
+        return n_cycles;
+      }
+
+      /**
+       * Mark the cells by Kelly's indicator of the displacement
+       * @p displacement (ghosted) and refine (and coarsen) the fixed
+       * fractions of them.
+       */
+      void
+      refine(const Mapping<2, 3>                        &mapping,
+             const DoFHandler<2, 3>                     &dof_handler,
+             const LA::Vector                           &displacement,
+             parallel::distributed::Triangulation<2, 3> &triangulation) const;
+
+    private:
+      unsigned int n_cycles         = 0;
+      double       refine_fraction  = 0.3;
+      double       coarsen_fraction = 0.;
+    };
+  } // namespace geometry
+} // namespace pneuma
