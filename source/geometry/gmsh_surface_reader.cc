@@ -330,21 +330,14 @@ namespace pneuma
     create_from_surface_data(SurfaceMeshData &data, Triangulation<2, 3> &tria)
     {
       // Only lines on the boundary can carry a boundary id.
-      std::map<std::pair<unsigned int, unsigned int>, unsigned int> count;
-      const auto key = [](const unsigned int a, const unsigned int b) {
-        return std::make_pair(std::min(a, b), std::max(a, b));
-      };
-      static constexpr unsigned int edge[4][2] = {{0, 2},
-                                                  {1, 3},
-                                                  {0, 1},
-                                                  {2, 3}};
+      std::map<MeshLine, unsigned int> count;
       for (const auto &c : data.cells)
-        for (const auto &e : edge)
-          ++count[key(c.vertices[e[0]], c.vertices[e[1]])];
+        for (unsigned int e = 0; e < 4; ++e)
+          ++count[cell_line(c, e)];
       SubCellData sub;
       for (const auto &l : data.tagged_lines)
         {
-          const auto it = count.find(key(l.vertices[0], l.vertices[1]));
+          const auto it = count.find(mesh_line(l.vertices[0], l.vertices[1]));
           if (it != count.end() && it->second == 1)
             sub.boundary_lines.push_back(l);
         }

@@ -15,23 +15,13 @@ namespace pneuma
     unsigned int
     split_junctions(SurfaceMeshData &data)
     {
-      using Line     = std::pair<unsigned int, unsigned int>;
-      const auto key = [](const unsigned int a, const unsigned int b) {
-        return Line(std::min(a, b), std::max(a, b));
-      };
-      // The four edges of a quadrilateral in deal.II vertex order.
-      static constexpr unsigned int edge[4][2] = {{0, 2},
-                                                  {1, 3},
-                                                  {0, 1},
-                                                  {2, 3}};
-      auto                         &cells      = data.cells;
+      auto &cells = data.cells;
 
-      std::map<Line, std::vector<unsigned int>> line_cells;
+      std::map<MeshLine, std::vector<unsigned int>> line_cells;
       for (unsigned int c = 0; c < cells.size(); ++c)
-        for (const auto &e : edge)
-          line_cells[key(cells[c].vertices[e[0]], cells[c].vertices[e[1]])]
-            .push_back(c);
-      std::set<Line>         junction_lines;
+        for (unsigned int e = 0; e < 4; ++e)
+          line_cells[cell_line(cells[c], e)].push_back(c);
+      std::set<MeshLine>     junction_lines;
       std::set<unsigned int> junction_vertices;
       for (const auto &[line, on] : line_cells)
         if (on.size() > 2)
@@ -50,11 +40,10 @@ namespace pneuma
             vertex_cells[v].push_back(c);
 
       // Original line of every (cell, edge), to carry tags across the split.
-      std::vector<std::array<Line, 4>> original(cells.size());
+      std::vector<std::array<MeshLine, 4>> original(cells.size());
       for (unsigned int c = 0; c < cells.size(); ++c)
         for (unsigned int e = 0; e < 4; ++e)
-          original[c][e] =
-            key(cells[c].vertices[edge[e][0]], cells[c].vertices[edge[e][1]]);
+          original[c][e] = cell_line(cells[c], e);
 
       // Fans around each junction vertex: cells joined through lines at the
       // vertex that are not junctions (union-find); all fans but the first
@@ -73,7 +62,7 @@ namespace pneuma
               k = parent[k] = parent[parent[k]];
             return k;
           };
-          std::map<Line, std::vector<unsigned int>> lines_at_v;
+          std::map<MeshLine, std::vector<unsigned int>> lines_at_v;
           for (unsigned int k = 0; k < around.size(); ++k)
             for (unsigned int e = 0; e < 4; ++e)
               {
@@ -111,19 +100,18 @@ namespace pneuma
 
       // Tags: a tagged boundary line keeps its id on its one cell; every
       // line that the split turned into a boundary is a junction face.
-      std::map<Line, types::boundary_id> tag;
+      std::map<MeshLine, types::boundary_id> tag;
       for (const auto &l : data.tagged_lines)
-        tag[key(l.vertices[0], l.vertices[1])] = l.boundary_id;
-      std::map<Line, unsigned int> new_count;
+        tag[mesh_line(l.vertices[0], l.vertices[1])] = l.boundary_id;
+      std::map<MeshLine, unsigned int> new_count;
       for (const auto &c : cells)
-        for (const auto &e : edge)
-          ++new_count[key(c.vertices[e[0]], c.vertices[e[1]])];
+        for (unsigned int e = 0; e < 4; ++e)
+          ++new_count[cell_line(c, e)];
       std::vector<CellData<1>> tagged;
       for (unsigned int c = 0; c < cells.size(); ++c)
         for (unsigned int e = 0; e < 4; ++e)
           {
-            const Line now =
-              key(cells[c].vertices[edge[e][0]], cells[c].vertices[edge[e][1]]);
+            const MeshLine now = cell_line(cells[c], e);
             if (new_count[now] != 1)
               continue;
             const auto &was = original[c][e];

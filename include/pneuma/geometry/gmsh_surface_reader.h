@@ -21,7 +21,9 @@
 #include <deal.II/base/point.h>
 #include <deal.II/grid/tria_description.h>
 
+#include <algorithm>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace pneuma
@@ -39,6 +41,29 @@ namespace pneuma
       /// Lines with a physical curve tag, as boundary ids.
       std::vector<CellData<1>> tagged_lines;
     };
+
+    /// A line of a surface mesh by its two vertex indices, smaller first.
+    using MeshLine = std::pair<unsigned int, unsigned int>;
+
+    /// Line @p e (deal.II numbering, 0..3) of the quadrilateral @p cell.
+    inline MeshLine
+    cell_line(const CellData<2> &cell, const unsigned int e)
+    {
+      static constexpr unsigned int ends[4][2] = {{0, 2},
+                                                  {1, 3},
+                                                  {0, 1},
+                                                  {2, 3}};
+      const unsigned int            a          = cell.vertices[ends[e][0]],
+                         b                     = cell.vertices[ends[e][1]];
+      return {std::min(a, b), std::max(a, b)};
+    }
+
+    /// The same line given by two vertex indices in either order.
+    inline MeshLine
+    mesh_line(const unsigned int a, const unsigned int b)
+    {
+      return {std::min(a, b), std::max(a, b)};
+    }
 
     /**
      * Read the quadrilaterals and tagged lines of the Gmsh file @p file.
