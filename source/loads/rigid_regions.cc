@@ -6,8 +6,6 @@
 #include <pneuma/loads/loads.h>
 #include <pneuma/loads/rigid_regions.h>
 
-#include <algorithm>
-
 namespace pneuma
 {
   namespace loads
@@ -188,48 +186,42 @@ namespace pneuma
       FEValues<2, 3> fe_values(mapping, fe, support, update_quadrature_points);
       std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
       for (const auto &plate : plates)
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          if (!cell->is_artificial() && plate.ids.count(cell->material_id()))
-            {
-              fe_values.reinit(cell);
-              cell->get_dof_indices(dofs);
-              for (unsigned int i = 0; i < dofs.size(); ++i)
-                constrain(plate,
-                          dofs[i],
-                          fe_values.quadrature_point(i),
-                          fe.system_to_component_index(i).first,
-                          constraints);
-            }
-    }
-
-    bool
-    RigidRegions::constrain(const Plate                  &plate,
-                            const types::global_dof_index dof,
-                            const Point<3>               &x,
-                            const unsigned int            c,
-                            AffineConstraints<double>    &constraints) const
-    {
-      if (std::find(plate.master_dofs.begin(), plate.master_dofs.end(), dof)
-            != plate.master_dofs.end()
-          || !constraints.can_store_line(dof)
-          || constraints.is_constrained(dof))
-        return false;
-      // Barycentric coordinates from the 2x2 normal equations.
-      const Point<3>    &A   = plate.masters[0];
-      const Tensor<1, 3> e1  = plate.masters[1] - A;
-      const Tensor<1, 3> e2  = plate.masters[2] - A;
-      const double       g11 = e1 * e1, g12 = e1 * e2, g22 = e2 * e2;
-      const double       det = g11 * g22 - g12 * g12;
-      const Tensor<1, 3> y   = x - A;
-      const double       r1 = y * e1, r2 = y * e2;
-      const double       wB = (g22 * r1 - g12 * r2) / det;
-      const double       wC = (g11 * r2 - g12 * r1) / det;
-      constraints.add_line(dof);
-      constraints.add_entry(dof, plate.master_dofs[c], 1. - wB - wC);
-      constraints.add_entry(dof, plate.master_dofs[3 + c], wB);
-      constraints.add_entry(dof, plate.master_dofs[6 + c], wC);
-      slaves.insert(dof);
-      return true;
+        {
+          const Point<3>    &A  = plate.masters[0];
+          const Tensor<1, 3> e1 = plate.masters[1] - A;
+          const Tensor<1, 3> e2 = plate.masters[2] - A;
+          // Barycentric coordinates from the 2x2 normal equations.
+          const double g11 = e1 * e1, g12 = e1 * e2, g22 = e2 * e2;
+          const double det = g11 * g22 - g12 * g12;
+          std::set<types::global_dof_index> masters(plate.master_dofs.begin(),
+                                                    plate.master_dofs.end());
+          for (const auto &cell : dof_handler.active_cell_iterators())
+            if (!cell->is_artificial() && plate.ids.count(cell->material_id()))
+              {
+                fe_values.reinit(cell);
+                cell->get_dof_indices(dofs);
+                for (unsigned int i = 0; i < dofs.size(); ++i)
+                  {
+                    const auto dof = dofs[i];
+                    if (masters.count(dof) || !constraints.can_store_line(dof)
+                        || constraints.is_constrained(dof))
+                      continue;
+                    const unsigned int c =
+                      fe.system_to_component_index(i).first;
+                    const Tensor<1, 3> x  = fe_values.quadrature_point(i) - A;
+                    const double       r1 = x * e1, r2 = x * e2;
+                    const double       wB = (g22 * r1 - g12 * r2) / det;
+                    const double       wC = (g11 * r2 - g12 * r1) / det;
+                    constraints.add_line(dof);
+                    constraints.add_entry(dof,
+                                          plate.master_dofs[c],
+                                          1. - wB - wC);
+                    constraints.add_entry(dof, plate.master_dofs[3 + c], wB);
+                    constraints.add_entry(dof, plate.master_dofs[6 + c], wC);
+                    slaves.insert(dof);
+                  }
+              }
+        }
     }
   } // namespace loads
 } // namespace pneuma

@@ -98,15 +98,6 @@ namespace pneuma
       };
       std::vector<std::set<types::material_id>> region_ids;
       std::vector<Plate>                        plates;
-
-      /// u_dof = sum of the barycentric weights of x times the plate's
-      /// master displacements (component c); false if not added.
-      bool
-      constrain(const Plate                   &plate,
-                const types::global_dof_index  dof,
-                const Point<3>                &x,
-                const unsigned int             c,
-                AffineConstraints<double>     &constraints) const;
       mutable std::set<types::global_dof_index> slaves;
     };
   } // namespace loads
