@@ -251,41 +251,26 @@ namespace pneuma
         for (unsigned int d = 0; d < 3; ++d)
           centre[d] = Utilities::MPI::sum(centre[d], comm);
         centre /= std::max(1., Utilities::MPI::sum(count, comm));
-        const auto &fe = dof_handler.get_fe();
-        std::vector<unsigned int> component(n_membrane, 0);
-        {
-          std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-          for (const auto &cell : dof_handler.active_cell_iterators())
-            if (!cell->is_artificial())
-              {
-                cell->get_dof_indices(dofs);
-                for (unsigned int k = 0; k < dofs.size(); ++k)
-                  component[dofs[k]] = fe.system_to_component_index(k).first;
-              }
-        }
+        // The translations are the component masks above; the rotation
+        // about axis a moves a dof of component c by (e_a x r)_c.
         std::vector<std::vector<double>> rigid(
           6, std::vector<double>(locally_owned.n_elements(), 0.));
         for (unsigned int k = 0; k < locally_owned.n_elements(); ++k)
-          {
-            const auto i = locally_owned.nth_index_in_set(k);
-            if (i >= n_membrane)
+          for (unsigned int c = 0; c < 3; ++c)
+            if (modes[c][k])
               {
-                const int c = cable_system.translation_component(i);
-                if (c >= 0)
-                  rigid[c][k] = 1.;
-                continue;
+                rigid[c][k]  = 1.;
+                const auto i = locally_owned.nth_index_in_set(k);
+                if (i >= n_membrane)
+                  continue;
+                const Tensor<1, 3> r = support.at(i) - centre;
+                for (unsigned int a = 0; a < 3; ++a)
+                  {
+                    Tensor<1, 3> e;
+                    e[a]            = 1.;
+                    rigid[3 + a][k] = cross_product_3d(e, r)[c];
+                  }
               }
-            const unsigned int c = component[i];
-            const Tensor<1, 3> r = support.at(i) - centre;
-            rigid[c][k]          = 1.;
-            // Rotation about axis a: (e_a x r)_c.
-            for (unsigned int a = 0; a < 3; ++a)
-              {
-                Tensor<1, 3> e;
-                e[a]            = 1.;
-                rigid[3 + a][k] = cross_product_3d(e, r)[c];
-              }
-          }
         linear_solver.set_rigid_body_modes(rigid);
       }
     linear_solver.reset();

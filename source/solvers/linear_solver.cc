@@ -250,13 +250,10 @@ namespace pneuma
                 control,
                 SolverGMRES<LA::Vector>::AdditionalData(reuse_iterations + 2,
                                                         true));
-              LA::Vector y(x);
-              y = 0.;
+              x = 0.;
               try
                 {
-                  gmres.solve(A, y, b, preconditioner);
-                  x = y;
-                  ++reused_solves;
+                  gmres.solve(A, x, b, preconditioner);
                   krylov_iterations += control.last_step();
                   return control.last_step();
                 }

@@ -110,13 +110,6 @@ namespace pneuma
         return krylov_iterations;
       }
 
-      /// Solves done by GMRES on an earlier factorization (direct solver).
-      unsigned int
-      n_reused_solves() const
-      {
-        return reused_solves;
-      }
-
     private:
       std::string                    solver_type, direct_package;
       double                         relative_tolerance = 1e-10;
@@ -143,7 +136,6 @@ namespace pneuma
       double       forcing             = 0.;
       bool         stale               = false;
       unsigned int factorizations      = 0;
-      unsigned int reused_solves       = 0;
       unsigned int krylov_iterations   = 0;
 
       /// Numeric factorization of the matrix bound to the Amesos problem.
