@@ -74,4 +74,15 @@ namespace pneuma_test
                   ok ? "PASS" : "FAIL");
     return ok;
   }
+
+  /// |reactions + applied loads| / |applied vertical load| of a run: zero
+  /// up to round-off when every force reaches the supports.
+  inline double
+  load_imbalance(const pneuma::RunSummary &s)
+  {
+    double sum = 0.;
+    for (unsigned int c = 0; c < 3; ++c)
+      sum += std::pow(s.reaction[c] + s.applied_load[c], 2);
+    return std::sqrt(sum) / std::abs(s.applied_load[2]);
+  }
 } // namespace pneuma_test

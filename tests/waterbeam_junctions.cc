@@ -90,10 +90,7 @@ main(int argc, char **argv)
   // |reactions + applied loads| / |applied vertical load| below 1e-6.
   const auto balanced = [](const pneuma::RunSummary &run,
                            const std::string        &name) {
-    double imbalance = 0.;
-    for (unsigned int c = 0; c < 3; ++c)
-      imbalance += std::pow(run.reaction[c] + run.applied_load[c], 2);
-    imbalance = std::sqrt(imbalance) / std::abs(run.applied_load[2]);
+    const double imbalance = pneuma_test::load_imbalance(run);
     std::printf("%s|reactions + applied loads| / |applied vertical load| %s "
                 "1e-6\n",
                 name.c_str(),

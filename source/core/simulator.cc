@@ -120,9 +120,7 @@ namespace pneuma
     s.fe      = std::make_unique<FESystem<2, 3>>(FE_Q<2, 3>(s.degree), 3);
     // The mapped support points of every cell are computed once from the
     // manifolds and cached: FEValues::reinit no longer calls the manifolds.
-    auto cache = std::make_unique<MappingQCache<2, 3>>(s.degree);
-    cache->initialize(MappingQ<2, 3>(s.degree), s.triangulation);
-    s.mapping = std::move(cache);
+    s.cache_mapping();
 
     // Every region a cell is in must have a valid material; every id
     // named in the input must exist in the mesh.
@@ -301,10 +299,16 @@ namespace pneuma
   {
     ghosted = solution;
     refinement.refine(*mapping, dof_handler, ghosted, triangulation);
+    cache_mapping();
+    setup_system();
+  }
+
+  void
+  Simulator::Impl::cache_mapping()
+  {
     auto cache = std::make_unique<MappingQCache<2, 3>>(degree);
     cache->initialize(MappingQ<2, 3>(degree), triangulation);
     mapping = std::move(cache);
-    setup_system();
   }
 
   IndexSet

@@ -73,6 +73,9 @@ namespace pneuma
     /// system up again (adaptive_refinement.h).
     void
     refine_mesh();
+    /// The mapping of the current mesh, its support points cached.
+    void
+    cache_mapping();
     /// Masters that dependent dofs refer to (share_constraints.h).
     IndexSet
     shared_masters() const;
