@@ -24,8 +24,9 @@ namespace
         << "Usage:\n"
         << "  pneuma FILE.prm [--set \"Path/To/Entry=value\"]...\n"
         << "  mpirun -np N pneuma FILE.prm\n"
-        << "  pneuma --print-parameters   every parameter with default, "
+        << "  pneuma --print-parameters        every parameter with default, "
            "pattern and doc\n"
+        << "  pneuma --print-parameters-json   the same as JSON (for tools)\n"
         << "  pneuma --help\n\n"
         << "Exit codes: 0 success, 1 bad input, 2 solver failure "
            "(last converged state written).\n";
@@ -50,18 +51,20 @@ main(int argc, char **argv)
             print_usage(std::cout);
           return 0;
         }
-      if (arg == "--print-parameters")
+      if (arg == "--print-parameters" || arg == "--print-parameters-json")
         {
+          // One template of each repeated subsection, every variant.
+          const auto               layout = pneuma::InputLayout::template_layout();
+          pneuma::Simulator        simulator(comm, layout);
           dealii::ParameterHandler prm;
-          pneuma::Simulator::declare_parameters(prm);
-          // Defaults with their documentation, then the allowed values.
+          simulator.declare_parameters(prm);
           if (root)
             {
-              prm.print_parameters(std::cout, dealii::ParameterHandler::Text);
-              std::cout << "\n# Allowed values of every entry\n"
-                        << "# ------------------------------\n";
-              prm.print_parameters(std::cout,
-                                   dealii::ParameterHandler::Description);
+              if (arg == "--print-parameters-json")
+                prm.print_parameters(std::cout, dealii::ParameterHandler::JSON);
+              else
+                prm.print_parameters(std::cout,
+                                     dealii::ParameterHandler::Text);
             }
           return 0;
         }
@@ -101,13 +104,16 @@ main(int argc, char **argv)
   int exit_code = pneuma::success;
   try
     {
-      dealii::ParameterHandler prm;
-      pneuma::read_parameters(prm, file, overrides);
+      // What the input uses decides what is declared.
+      const auto layout = pneuma::InputLayout::read(file, overrides);
       // The simulator is destroyed only after its errors are handled, so
       // no destructor ever runs with an exception in flight.
-      pneuma::Simulator simulator(comm);
+      pneuma::Simulator simulator(comm, layout);
       try
         {
+          dealii::ParameterHandler prm;
+          simulator.declare_parameters(prm);
+          pneuma::parse_input(prm, file, overrides);
           simulator.parse_parameters(prm);
           simulator.setup();
           // Keep a copy of the parameters as used.
@@ -120,24 +126,27 @@ main(int argc, char **argv)
               std::ofstream copy(dir + "/parameters.prm");
               prm.print_parameters(copy, dealii::ParameterHandler::ShortText);
             }
-          const pneuma::RunSummary summary = simulator.run();
-          exit_code                        = summary.exit_code;
+          const pneuma::RunResult result = simulator.run();
+          exit_code                       = result.exit_code;
           if (root && exit_code != pneuma::success)
-            std::cerr << "pneuma: " << summary.message << std::endl;
+            std::cerr << "pneuma: " << result.message << std::endl;
+          const auto &summary = result.summary;
           if (root)
-            for (unsigned int m = 0; m < summary.monitor_displacements.size();
+            for (unsigned int m = 0; summary.has("m" + std::to_string(m) + "_u");
                  ++m)
               {
-                const auto &x = summary.monitor_positions[m];
-                const auto &u = summary.monitor_displacements[m];
+                const std::string key = "m" + std::to_string(m);
+                const auto        x   = summary.get_vector(key + "_position");
+                const auto        u   = summary.get_vector(key + "_u");
                 std::cout << "monitor " << m << " at (" << x[0] << ", " << x[1]
                           << ", " << x[2] << "): u = (" << u[0] << ", " << u[1]
                           << ", " << u[2] << ") m" << std::endl;
               }
           if (root && exit_code == pneuma::success)
-            std::cout << "pneuma: finished, " << summary.n_steps << " steps, "
-                      << summary.n_newton_iterations << " Newton iterations, "
-                      << summary.wall_seconds << " s" << std::endl;
+            std::cout << "pneuma: finished, " << summary.get("steps")
+                      << " steps, " << summary.get("newton_iterations")
+                      << " Newton iterations, " << summary.get("wall_seconds")
+                      << " s" << std::endl;
         }
       catch (const pneuma::InputError &e)
         {

@@ -1,17 +1,21 @@
 #pragma once
 
-// Shared helpers of the pneuma verification tests: run a scene configured
-// entry by entry, and compare a value with its reference, printing the
-// reference, the value and the relative error at fixed precision.
+// Shared helpers of the pneuma verification tests: set a scene up from
+// "Path/To/Entry" = value settings (through the same input path as the
+// main program: layout, declaration, parse), run it, and compare a value
+// with its reference, printing the reference, the value and the relative
+// error at fixed precision.
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
+#include <pneuma/core/input_layout.h>
 #include <pneuma/core/simulator.h>
 
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -20,37 +24,50 @@ namespace pneuma_test
 {
   using Settings = std::vector<std::pair<std::string, std::string>>;
 
-  /// Apply "Path/To/Entry" = value settings to a declared handler.
-  inline void
-  apply(dealii::ParameterHandler &prm, const Settings &settings)
+  /// Quiet runs without VTU into "run-output".
+  inline Settings
+  quiet()
   {
+    return {{"Output/Quiet", "true"},
+            {"Output/Directory", "run-output"},
+            {"Output/Write VTU", "false"},
+            {"Newton/Print convergence table", "false"}};
+  }
+
+  /**
+   * A simulator set up from @p settings on top of the defaults, or of the
+   * parameter file @p file if given (settings then act as --set).
+   */
+  inline std::unique_ptr<pneuma::Simulator>
+  make(const Settings    &settings,
+       const std::string &file = "",
+       const MPI_Comm     comm = MPI_COMM_WORLD)
+  {
+    std::vector<std::string> overrides;
     for (const auto &s : settings)
-      {
-        const auto path = dealii::Utilities::split_string_list(s.first, '/');
-        for (unsigned int i = 0; i + 1 < path.size(); ++i)
-          prm.enter_subsection(path[i]);
-        prm.set(path.back(), s.second);
-        for (unsigned int i = 0; i + 1 < path.size(); ++i)
-          prm.leave_subsection();
-      }
+      overrides.push_back(s.first + "=" + s.second);
+    const auto layout = file.empty() ?
+                          pneuma::InputLayout::from_text("", overrides) :
+                          pneuma::InputLayout::read(file, overrides);
+    auto simulator = std::make_unique<pneuma::Simulator>(comm, layout);
+    dealii::ParameterHandler prm;
+    simulator->declare_parameters(prm);
+    if (file.empty())
+      pneuma::parse_input_text(prm, "", overrides);
+    else
+      pneuma::parse_input(prm, file, overrides);
+    simulator->parse_parameters(prm);
+    simulator->setup();
+    return simulator;
   }
 
   /// Run pneuma quietly with @p settings on top of the defaults.
-  inline pneuma::RunSummary
+  inline pneuma::RunResult
   run(const Settings &settings, const MPI_Comm comm = MPI_COMM_WORLD)
   {
-    dealii::ParameterHandler prm;
-    pneuma::Simulator::declare_parameters(prm);
-    apply(prm,
-          {{"Output/Quiet", "true"},
-           {"Output/Directory", "run-output"},
-           {"Output/Write VTU", "false"},
-           {"Newton/Print convergence table", "false"}});
-    apply(prm, settings);
-    pneuma::Simulator simulator(comm);
-    simulator.parse_parameters(prm);
-    simulator.setup();
-    return simulator.run();
+    Settings all = quiet();
+    all.insert(all.end(), settings.begin(), settings.end());
+    return make(all, "", comm)->run();
   }
 
   /// Print "name: reference r, value v, relative error e" and return
@@ -78,11 +95,13 @@ namespace pneuma_test
   /// |reactions + applied loads| / |applied vertical load| of a run: zero
   /// up to round-off when every force reaches the supports.
   inline double
-  load_imbalance(const pneuma::RunSummary &s)
+  load_imbalance(const pneuma::RunResult &s)
   {
-    double sum = 0.;
+    const auto r   = s.summary.get_vector("reaction");
+    const auto f   = s.summary.get_vector("applied_load");
+    double     sum = 0.;
     for (unsigned int c = 0; c < 3; ++c)
-      sum += std::pow(s.reaction[c] + s.applied_load[c], 2);
-    return std::sqrt(sum) / std::abs(s.applied_load[2]);
+      sum += std::pow(r[c] + f[c], 2);
+    return std::sqrt(sum) / std::abs(f[2]);
   }
 } // namespace pneuma_test

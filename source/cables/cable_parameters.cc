@@ -65,7 +65,7 @@ namespace pneuma
     }
 
     void
-    CableParameters::declare_parameters(ParameterHandler &prm)
+    CableParameters::declare_count(ParameterHandler &prm)
     {
       prm.enter_subsection("Cables");
       prm.declare_entry("Number of cables",
@@ -73,6 +73,13 @@ namespace pneuma
                         Patterns::Integer(0, max_cables),
                         "Cables 1..N below are used (0: no cables, and no "
                         "cable work at all).");
+      prm.leave_subsection();
+    }
+
+    void
+    CableParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Cables");
       for (unsigned int c = 1; c <= max_cables; ++c)
         {
           prm.enter_subsection("Cable " + std::to_string(c));

@@ -9,13 +9,20 @@ namespace pneuma
   namespace chambers
   {
     void
-    ChamberParameters::declare_parameters(ParameterHandler &prm)
+    ChamberParameters::declare_count(ParameterHandler &prm)
     {
       prm.enter_subsection("Chambers");
       prm.declare_entry("Number of chambers",
                         "0",
                         Patterns::Integer(0, max_chambers),
                         "Chambers 1..N below are used (0: no chambers).");
+      prm.leave_subsection();
+    }
+
+    void
+    ChamberParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Chambers");
       prm.declare_entry("Ambient pressure",
                         "101325",
                         Patterns::Double(0.),

@@ -132,7 +132,7 @@ namespace pneuma
     }
 
     void
-    ChamberSystem::initialize(const LA::Vector &u, const double t)
+    ChamberSystem::setup_groups()
     {
       const unsigned int n = parameters.chambers.size();
       groups.clear();
@@ -162,6 +162,13 @@ namespace pneuma
         }
       unknown_scale.assign(n_total, 1.);
       residual_scale.assign(n_total, 1.);
+    }
+
+    void
+    ChamberSystem::initialize(const LA::Vector &u, const double t)
+    {
+      const unsigned int n = parameters.chambers.size();
+      setup_groups();
       time = t;
 
       std::vector<ChamberMeasures> m;
@@ -359,14 +366,36 @@ namespace pneuma
     void
     ChamberSystem::evaluate(const Vector<double>               &border,
                             const std::vector<ChamberMeasures> &m,
-                            Vector<double>                     &residual)
+                            Vector<double>                     &residual,
+                            solvers::BorderCoupling            &coupling,
+                            const unsigned int                  offset) const
     {
       residual.reinit(n_total);
-      B.resize(n_total);
-      C.resize(n_total);
-      has_B.assign(n_total, false);
-      has_C.assign(n_total, false);
-      D.reinit(n_total, n_total);
+      for (unsigned int j = 0; j < n_total; ++j)
+        {
+          coupling.has_B[offset + j]          = false;
+          coupling.has_C[offset + j]          = false;
+          coupling.unknown_scale[offset + j]  = unknown_scale[j];
+          coupling.residual_scale[offset + j] = residual_scale[j];
+          for (unsigned int k = 0; k < coupling.size(); ++k)
+            coupling.D(offset + j, k) = 0.;
+        }
+      // Rows and columns of this system in the coupling.
+      const auto B     = [&](const unsigned int j) -> LA::Vector & {
+        return coupling.B[offset + j];
+      };
+      const auto C     = [&](const unsigned int j) -> LA::Vector & {
+        return coupling.C[offset + j];
+      };
+      const auto has_B = [&](const unsigned int j) {
+        return coupling.has_B[offset + j];
+      };
+      const auto has_C = [&](const unsigned int j) {
+        return coupling.has_C[offset + j];
+      };
+      const auto D = [&](const unsigned int j, const unsigned int k) -> double & {
+        return coupling.D(offset + j, offset + k);
+      };
       const double p_a         = parameters.ambient_pressure;
       const double g_magnitude = parameters.gravity.norm();
       for (const auto &g : groups)
@@ -395,9 +424,9 @@ namespace pneuma
             {
               const unsigned int j = g.p_index;
               const double       p = border[j] * unknown_scale[j];
-              B[j]                 = q;
-              B[j] *= -1.;
-              has_B[j] = true;
+              B(j)                 = q;
+              B(j) *= -1.;
+              has_B(j) = true;
               double r = 0.;
               if (pressure_controlled(g))
                 {
@@ -407,18 +436,18 @@ namespace pneuma
               else if (def.control == GasControl::volume && !g.sealed)
                 {
                   r        = V - curve(*def.volume, time) * g.V0;
-                  C[j]     = q;
-                  has_C[j] = true;
+                  C(j)     = q;
+                  has_C(j) = true;
                 }
               else
                 {
                   const auto [p_abs, dp] = gas_law(g, V - V_l);
                   r                      = p - (p_abs - p_a);
-                  C[j]                   = q;
+                  C(j)                   = q;
                   if (with_liquid)
-                    C[j] -= q_l;
-                  C[j] *= -dp;
-                  has_C[j] = true;
+                    C(j) -= q_l;
+                  C(j) *= -dp;
+                  has_C(j) = true;
                   D(j, j)  = 1.;
                   if (with_liquid)
                     D(j, g.h_index) = dp * A_fs;
@@ -434,114 +463,15 @@ namespace pneuma
                   residual[j] = 0.;
                   continue;
                 }
-              B[j] = q_l;
-              B[j] *= -def.density * g_magnitude;
-              has_B[j] = true;
-              C[j]     = q_l;
-              has_C[j] = true;
+              B(j) = q_l;
+              B(j) *= -def.density * g_magnitude;
+              has_B(j) = true;
+              C(j)     = q_l;
+              has_C(j) = true;
               D(j, j)  = A_fs;
               residual[j] =
                 (V_l - curve(*def.liquid_volume, time)) * residual_scale[j];
             }
-        }
-    }
-
-    void
-    ChamberSystem::solve(solvers::LinearSolver          &solver,
-                         const LA::SparseMatrix         &K,
-                         const solvers::BorderedVector &rhs,
-                         solvers::BorderedVector       &dx) const
-    {
-      const unsigned int  m = n_total;
-      std::vector<double> r_g(m), dl(m, 0.);
-      for (unsigned int j = 0; j < m; ++j)
-        r_g[j] = rhs.border[j] / residual_scale[j];
-
-      // Unknowns whose constraint does not involve u or other unknowns.
-      std::vector<bool> decoupled(m, false);
-      for (unsigned int j = 0; j < m; ++j)
-        {
-          bool only_diagonal = !has_C[j] && D(j, j) != 0.;
-          for (unsigned int k = 0; k < m; ++k)
-            if (k != j && D(j, k) != 0.)
-              only_diagonal = false;
-          decoupled[j] = only_diagonal;
-        }
-      LA::Vector rhs_u(rhs.field);
-      for (unsigned int j = 0; j < m; ++j)
-        if (decoupled[j])
-          {
-            dl[j] = r_g[j] / D(j, j);
-            if (has_B[j])
-              rhs_u.add(-dl[j], B[j]);
-          }
-
-      std::vector<unsigned int> coupled;
-      for (unsigned int j = 0; j < m; ++j)
-        if (!decoupled[j])
-          coupled.push_back(j);
-
-      LA::Vector y0(rhs.field);
-      y0 = 0.;
-      solver.solve(K, y0, rhs_u);
-      if (!coupled.empty())
-        {
-          const unsigned int      n_c = coupled.size();
-          std::vector<LA::Vector> Y(n_c);
-          for (unsigned int a = 0; a < n_c; ++a)
-            {
-              Y[a].reinit(rhs.field);
-              if (has_B[coupled[a]])
-                solver.solve(K, Y[a], B[coupled[a]]);
-            }
-          FullMatrix<double> S(n_c, n_c);
-          Vector<double>     s_rhs(n_c), x(n_c);
-          for (unsigned int a = 0; a < n_c; ++a)
-            {
-              const unsigned int i = coupled[a];
-              s_rhs[a]             = r_g[i];
-              for (unsigned int k = 0; k < m; ++k)
-                if (decoupled[k])
-                  s_rhs[a] -= D(i, k) * dl[k];
-              if (has_C[i])
-                s_rhs[a] -= C[i] * y0;
-              for (unsigned int b = 0; b < n_c; ++b)
-                {
-                  S(a, b) = D(i, coupled[b]);
-                  if (has_C[i])
-                    S(a, b) -= C[i] * Y[b];
-                }
-            }
-          S.gauss_jordan();
-          S.vmult(x, s_rhs);
-          for (unsigned int a = 0; a < n_c; ++a)
-            {
-              dl[coupled[a]] = x[a];
-              y0.add(-x[a], Y[a]);
-            }
-        }
-      dx.field = y0;
-      dx.border.reinit(m);
-      for (unsigned int j = 0; j < m; ++j)
-        dx.border[j] = dl[j] / unknown_scale[j];
-    }
-
-    void
-    ChamberSystem::vmult(const LA::SparseMatrix         &K,
-                         const solvers::BorderedVector &x,
-                         solvers::BorderedVector       &y) const
-    {
-      K.vmult(y.field, x.field);
-      y.border.reinit(n_total);
-      for (unsigned int j = 0; j < n_total; ++j)
-        if (has_B[j])
-          y.field.add(x.border[j] * unknown_scale[j], B[j]);
-      for (unsigned int j = 0; j < n_total; ++j)
-        {
-          double v = has_C[j] ? C[j] * x.field : 0.;
-          for (unsigned int k = 0; k < n_total; ++k)
-            v += D(j, k) * x.border[k] * unknown_scale[k];
-          y.border[j] = v * residual_scale[j];
         }
     }
 

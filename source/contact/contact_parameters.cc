@@ -7,7 +7,7 @@ namespace pneuma
   namespace contact
   {
     void
-    ContactParameters::declare_parameters(ParameterHandler &prm)
+    ContactParameters::declare_count(ParameterHandler &prm)
     {
       prm.enter_subsection("Contact");
       prm.declare_entry("Number of pairs",
@@ -15,6 +15,13 @@ namespace pneuma
                         Patterns::Integer(0, max_pairs),
                         "Contact pairs 1..N below are used (0: no contact "
                         "and no search).");
+      prm.leave_subsection();
+    }
+
+    void
+    ContactParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Contact");
       for (unsigned int k = 1; k <= max_pairs; ++k)
         {
           prm.enter_subsection("Pair " + std::to_string(k));

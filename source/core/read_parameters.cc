@@ -41,14 +41,45 @@ namespace pneuma
         out.pop_back();
       return out;
     }
+
+    void
+    apply_overrides(dealii::ParameterHandler       &prm,
+                    const std::vector<std::string> &overrides)
+    {
+      for (const auto &o : overrides)
+        {
+          const auto eq = o.find('=');
+          check_input(eq != std::string::npos,
+                      "--set " + o,
+                      "expected Path/To/Entry=value");
+          const auto path =
+            dealii::Utilities::split_string_list(o.substr(0, eq), '/');
+          const std::string value = dealii::Utilities::trim(o.substr(eq + 1));
+          check_input(!path.empty(), "--set " + o, "empty parameter path");
+          unsigned int depth = 0;
+          try
+            {
+              for (unsigned int i = 0; i + 1 < path.size(); ++i, ++depth)
+                prm.enter_subsection(path[i]);
+              prm.set(path.back(), value);
+            }
+          catch (const std::exception &e)
+            {
+              for (; depth > 0; --depth)
+                prm.leave_subsection();
+              throw InputError(o.substr(0, eq), short_message(e));
+            }
+          for (; depth > 0; --depth)
+            prm.leave_subsection();
+        }
+    }
   } // namespace
 
   void
-  read_parameters(dealii::ParameterHandler       &prm,
-                  const std::string              &file,
-                  const std::vector<std::string> &overrides)
+  parse_input(dealii::ParameterHandler       &prm,
+              const std::string              &file,
+              const std::vector<std::string> &overrides)
   {
-    Simulator::declare_parameters(prm);
     {
       std::ifstream in(file);
       check_input(static_cast<bool>(in), file, "cannot open parameter file");
@@ -61,31 +92,22 @@ namespace pneuma
       {
         throw InputError(file, short_message(e));
       }
-    for (const auto &o : overrides)
+    apply_overrides(prm, overrides);
+  }
+
+  void
+  parse_input_text(dealii::ParameterHandler       &prm,
+                   const std::string              &text,
+                   const std::vector<std::string> &overrides)
+  {
+    try
       {
-        const auto eq = o.find('=');
-        check_input(eq != std::string::npos,
-                    "--set " + o,
-                    "expected Path/To/Entry=value");
-        const auto path =
-          dealii::Utilities::split_string_list(o.substr(0, eq), '/');
-        const std::string value = dealii::Utilities::trim(o.substr(eq + 1));
-        check_input(!path.empty(), "--set " + o, "empty parameter path");
-        unsigned int depth = 0;
-        try
-          {
-            for (unsigned int i = 0; i + 1 < path.size(); ++i, ++depth)
-              prm.enter_subsection(path[i]);
-            prm.set(path.back(), value);
-          }
-        catch (const std::exception &e)
-          {
-            for (; depth > 0; --depth)
-              prm.leave_subsection();
-            throw InputError(o.substr(0, eq), short_message(e));
-          }
-        for (; depth > 0; --depth)
-          prm.leave_subsection();
+        prm.parse_input_from_string(text, "", /*skip_undefined=*/false);
       }
+    catch (const std::exception &e)
+      {
+        throw InputError("parameter text", short_message(e));
+      }
+    apply_overrides(prm, overrides);
   }
 } // namespace pneuma

@@ -21,7 +21,7 @@ namespace pneuma
     }
 
     void
-    SceneGenerator::declare_parameters(ParameterHandler &prm)
+    SceneGenerator::declare_type(ParameterHandler &prm)
     {
       prm.enter_subsection("Geometry");
       prm.declare_entry("Type",
@@ -30,6 +30,13 @@ namespace pneuma
                           "disc|square|sphere|closed cylinder|gmsh|none"),
                         "Membrane surface: a built-in generator, a Gmsh "
                         "mesh file, or none (a scene of cables only).");
+      prm.leave_subsection();
+    }
+
+    void
+    SceneGenerator::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Geometry");
       prm.declare_entry("Radius",
                         "0.23",
                         Patterns::Double(),

@@ -91,12 +91,6 @@ namespace pneuma
       const Tensor<1, 3> g =
         loads.has_gravity() ? loads.gravity(t) : Tensor<1, 3>();
 
-      if (request.residual)
-        *request.residual = 0.;
-      if (request.external)
-        *request.external = 0.;
-      if (request.tangent)
-        *request.tangent = 0.;
 
       for (const auto &cell : dof_handler->active_cell_iterators())
         {

@@ -13,54 +13,43 @@ namespace pneuma
     LoadStepping::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Load stepping");
-      prm.declare_entry("Stage end times",
-                        "1",
-                        Patterns::List(Patterns::Double(0.), 1),
+      prm.add_parameter("Stage end times",
+                        stage_ends,
                         "Pseudo times at which the load stages end, "
-                        "increasing; the run ends at the last one.");
-      prm.declare_entry("Initial increment",
-                        "0.25",
-                        Patterns::Double(0.),
-                        "First pseudo-time increment; > 0.");
-      prm.declare_entry("Minimum increment",
-                        "1e-4",
-                        Patterns::Double(0.),
+                        "increasing; the run ends at the last one.",
+                        Patterns::List(Patterns::Double(0.), 1));
+      prm.add_parameter("Initial increment",
+                        initial_increment,
+                        "First pseudo-time increment; > 0.",
+                        Patterns::Double(0.));
+      prm.add_parameter("Minimum increment",
+                        minimum_increment,
                         "The run stops (exit 2) when a cut back would go "
-                        "below this; > 0.");
-      prm.declare_entry("Maximum increment",
-                        "1",
-                        Patterns::Double(0.),
-                        "Largest pseudo-time increment; > 0.");
-      prm.declare_entry("Growth factor",
-                        "1.5",
-                        Patterns::Double(1.),
-                        "Increment growth after an easy step.");
-      prm.declare_entry("Cut-back factor",
-                        "0.5",
-                        Patterns::Double(0.01, 0.99),
-                        "Increment reduction after a failed step.");
-      prm.declare_entry("Easy iterations",
-                        "5",
-                        Patterns::Integer(1),
+                        "below this; > 0.",
+                        Patterns::Double(0.));
+      prm.add_parameter("Maximum increment",
+                        maximum_increment,
+                        "Largest pseudo-time increment; > 0.",
+                        Patterns::Double(0.));
+      prm.add_parameter("Growth factor",
+                        growth_factor,
+                        "Increment growth after an easy step.",
+                        Patterns::Double(1.));
+      prm.add_parameter("Cut-back factor",
+                        cut_back_factor,
+                        "Increment reduction after a failed step.",
+                        Patterns::Double(0.01, 0.99));
+      prm.add_parameter("Easy iterations",
+                        easy_iterations,
                         "A step that converges in at most this many Newton "
-                        "iterations is easy.");
+                        "iterations is easy.",
+                        Patterns::Integer(1));
       prm.leave_subsection();
     }
 
     void
-    LoadStepping::parse_parameters(ParameterHandler &prm)
+    LoadStepping::parse_parameters(ParameterHandler &)
     {
-      prm.enter_subsection("Load stepping");
-      stage_ends = Utilities::string_to_double(
-        Utilities::split_string_list(prm.get("Stage end times")));
-      initial_increment = prm.get_double("Initial increment");
-      minimum_increment = prm.get_double("Minimum increment");
-      maximum_increment = prm.get_double("Maximum increment");
-      growth_factor     = prm.get_double("Growth factor");
-      cut_back_factor   = prm.get_double("Cut-back factor");
-      easy_iterations   = prm.get_integer("Easy iterations");
-      prm.leave_subsection();
-
       const std::string p = "Load stepping/";
       check_input(stage_ends.front() > 0.
                     && std::is_sorted(stage_ends.begin(), stage_ends.end())

@@ -9,77 +9,197 @@ namespace pneuma
 {
   namespace solvers
   {
+    namespace
+    {
+      /// Armijo constant c of the sufficient decrease (1 - c alpha)|r|: any
+      /// decrease proportional to the step is accepted (Nocedal & Wright).
+      constexpr double armijo = 1e-4;
+      /// Step length reduction of each backtracking step.
+      constexpr double backtrack = 0.5;
+      /// "update at the round-off floor": |r| may be this much above the
+      /// tolerance when the update has vanished (stiff plates beside a soft
+      /// membrane: |r| cannot drop further, yet u no longer changes).
+      constexpr double floor_update = 1e4;
+      /// "no descent at the round-off floor": no step reduces |r| while it
+      /// is within this factor of the tolerance (a penalty beside a
+      /// prestressed cable).
+      constexpr double floor_descent = 1e2;
+      /// Inexact Newton forcing: eta = min(max_forcing, forcing_ratio
+      /// |r|/|r_ref|).
+      constexpr double max_forcing = 1e-3, forcing_ratio = 1e-2;
+
+      /// The continuation schedule (doc/theory.md "Newton").
+      struct ContinuationSchedule
+      {
+        /// Implicit steps are solved to |r_s| <= inner_tolerance |r_ref| in
+        /// at most inner_iterations; they need not be accurate.
+        static constexpr double       inner_tolerance  = 1e-3;
+        static constexpr unsigned int inner_iterations = 6;
+        /// The shift after a successful / failed implicit step.
+        static constexpr double shrink = 0.5, grow = 3.;
+        /// Pure Newton takes over once |r| <= switch_ratio |r_ref|, or the
+        /// shift has fallen to min_shift times its start.
+        static constexpr double switch_ratio = 1e-2, min_shift = 1e-6;
+        /// Failures that cost no iteration (the linear solver) stop it.
+        static constexpr unsigned int max_failures = 20;
+        /// Iteration budget, in units of Newton/Maximum iterations.
+        static constexpr unsigned int budget = 4;
+      };
+
+      /**
+       * The watchdog: a full step that raises |r| is taken from a saved
+       * state, and the watch runs for `steps` more iterations. Progress
+       * below the saved |r| ends it; otherwise the saved state comes back
+       * and the line search must backtrack from it (the watch is barred
+       * until a step is accepted normally).
+       */
+      class Watchdog
+      {
+      public:
+        explicit Watchdog(const unsigned int steps)
+          : steps(steps)
+        {
+        }
+
+        /// May the rejected full step @p trial_norm be taken anyway?
+        bool
+        may_take(const double trial_norm) const
+        {
+          return steps > 0 && !barred && std::isfinite(trial_norm);
+        }
+
+        /// Take it: save the state unless a watch is already on.
+        void
+        start(const BorderedVector &u, const double r_norm)
+        {
+          if (left > 0)
+            return;
+          saved      = u;
+          saved_norm = r_norm;
+          left       = steps + 1;
+        }
+
+        /**
+         * After a step to |r| = @p r_norm: true if the watch failed, and
+         * @p u and its norm must be restored from the saved state.
+         */
+        bool
+        failed(const double r_norm)
+        {
+          if (left == 0)
+            {
+              barred = false;
+              return false;
+            }
+          if (r_norm <= (1. - armijo) * saved_norm)
+            left = 0; // progress: the watch ends
+          else if (--left == 0)
+            {
+              barred = true;
+              return true;
+            }
+          return false;
+        }
+
+        const BorderedVector &
+        saved_state() const
+        {
+          return saved;
+        }
+
+      private:
+        unsigned int   steps, left = 0;
+        bool           barred     = false;
+        double         saved_norm = 0.;
+        BorderedVector saved;
+      };
+
+      /// Outcome of the line search along one Newton direction.
+      struct Step
+      {
+        bool   accepted = false, watched = false;
+        double alpha = 1., norm = 0.;
+      };
+    } // namespace
+
+    double
+    NewtonSolver::forcing_term(const double ratio)
+    {
+      return std::min(max_forcing, forcing_ratio * ratio);
+    }
+
     void
     NewtonSolver::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Newton");
-      prm.declare_entry("Maximum iterations",
-                        "25",
-                        Patterns::Integer(1, 1000),
-                        "Newton iterations per load step before the step "
-                        "is cut back.");
-      prm.declare_entry("Residual tolerance",
-                        "1e-8",
-                        Patterns::Double(1e-16, 1.),
-                        "Converged when |r| <= tol * max(|r_0|, |f_ext|).");
-      prm.declare_entry("Update tolerance",
-                        "1e-8",
-                        Patterns::Double(1e-16, 1.),
-                        "Also converged when a Newton update has |du| <= "
-                        "tol |u| while |r| is within 1e4 of the residual "
-                        "tolerance (the round-off floor of stiff parts).");
-      prm.declare_entry("Line search",
-                        "true",
-                        Patterns::Bool(),
-                        "Backtrack when a full step increases |r|.");
-      prm.declare_entry("Maximum line search steps",
-                        "6",
-                        Patterns::Integer(0, 30),
-                        "Halvings of the step length at most.");
-      prm.declare_entry("Watchdog steps",
-                        "3",
-                        Patterns::Integer(0, 20),
+      prm.add_parameter("Maximum iterations",
+                        max_iter,
+                        "Newton iterations per load step before the step is "
+                        "cut back.",
+                        Patterns::Integer(1, 1000));
+      prm.add_parameter("Residual tolerance",
+                        residual_tolerance,
+                        "Converged when |r| <= tol * max(|r_0|, |f|), f the "
+                        "force scale of the loads (test 'residual').",
+                        Patterns::Double(1e-16, 1.));
+      prm.add_parameter("Update tolerance",
+                        update_tolerance,
+                        "Also converged when an update has |du| <= tol |u| "
+                        "while |r| is within 1e4 of the residual tolerance "
+                        "(test 'update at the round-off floor' of stiff "
+                        "parts).",
+                        Patterns::Double(1e-16, 1.));
+      prm.add_parameter("Line search",
+                        line_search,
+                        "Backtrack when a full step does not reduce |r| "
+                        "(Armijo).");
+      prm.add_parameter("Maximum line search steps",
+                        max_line_search,
+                        "Halvings of the step length at most.",
+                        Patterns::Integer(0, 30));
+      prm.add_parameter("Watchdog steps",
+                        watchdog_steps,
                         "A full Newton step that raises |r| is still taken, "
                         "and the iteration goes on for up to this many "
                         "steps; if |r| has not dropped below its value "
                         "before, that state is restored and the line "
-                        "search backtracks from it (0: backtrack at once).");
-      prm.declare_entry("Regularisation factor",
-                        "1e-2",
-                        Patterns::Double(0.),
-                        "First Levenberg-Marquardt shift, relative to "
-                        "mean(diag K)/mean(diag L), used when a Newton step "
-                        "fails to reduce |r| (0 = never regularise). Changes "
-                        "the iteration matrix only, not the equilibrium.");
-      prm.declare_entry("Print convergence table",
-                        "true",
-                        Patterns::Bool(),
+                        "search backtracks from it (0: backtrack at once).",
+                        Patterns::Integer(0, 20));
+      prm.add_parameter("Regularisation factor",
+                        shift_factor,
+                        "First continuation shift, relative to "
+                        "mean(diag K)/mean(diag L), used when Newton fails "
+                        "from the unstressed state (0: never). Changes the "
+                        "iteration only, not the equilibrium.",
+                        Patterns::Double(0.));
+      prm.add_parameter("Print convergence table",
+                        print_table,
                         "Print one line per Newton iteration.");
       prm.leave_subsection();
     }
 
     void
-    NewtonSolver::parse_parameters(ParameterHandler &prm)
+    NewtonSolver::parse_parameters(ParameterHandler &)
     {
-      prm.enter_subsection("Newton");
-      max_iter           = prm.get_integer("Maximum iterations");
-      residual_tolerance = prm.get_double("Residual tolerance");
-      update_tolerance   = prm.get_double("Update tolerance");
-      line_search        = prm.get_bool("Line search");
-      max_line_search    = prm.get_integer("Maximum line search steps");
-      watchdog_steps     = prm.get_integer("Watchdog steps");
-      shift_factor       = prm.get_double("Regularisation factor");
-      print_table        = prm.get_bool("Print convergence table");
-      prm.leave_subsection();
+      // Every entry is bound by declare_parameters().
+    }
+
+    void
+    NewtonSolver::print_header(NonlinearProblem         &problem,
+                               const ConditionalOStream &out) const
+    {
+      if (!print_table)
+        return;
+      out << "      it  |r|/|r_ref|";
+      for (const auto &name : problem.block_names())
+        out << std::setw(11) << name;
+      out << "   |du|/|u|    shift     step\n";
     }
 
     bool
     NewtonSolver::iterate(NonlinearProblem         &problem,
                           BorderedVector           &u,
-                          const double              shift,
-                          const BorderedVector     &u_anchor,
-                          const unsigned int        max_iterations,
-                          const double              tolerance,
+                          const Phase              &phase,
                           const double              r_ref,
                           const ConditionalOStream &out,
                           NewtonResult             &result) const
@@ -88,54 +208,52 @@ namespace pneuma
       // r_s(u) = r(u) + s L (u - u_anchor): the regularised residual.
       const auto evaluate = [&](const BorderedVector &x, BorderedVector &r) {
         problem.assemble(x, r);
-        if (shift > 0.)
+        if (phase.shift > 0.)
           {
             du = x;
-            du -= u_anchor;
+            du -= phase.anchor;
             problem.laplacian_vmult(du, Lx);
-            r.add(shift, Lx);
+            r.add(phase.shift, Lx);
           }
         return r.l2_norm();
       };
-      // Watchdog (non-monotone acceptance, after Chamberlain et al.): a
-      // full step that raises |r| is taken anyway from a saved state; if
-      // |r| has not dropped below the saved value within `watchdog_steps`
-      // further iterations, the saved state is restored and the line
-      // search backtracks from it. A linearised rotation stretches the
-      // section of a solid beam by the square of the angle, and its stiff
-      // section modes then raise |r| by orders of magnitude although the
-      // step is good: the next iteration restores the section.
-      BorderedVector saved_u(u);
-      double         saved_norm   = 0.;
-      unsigned int   watch_left   = 0; // > 0: a watch is on
-      bool           watch_barred = false;
+      const double tolerance = phase.tolerance * r_ref;
+      const bool   pure      = phase.shift == 0.;
+      Watchdog     watchdog(line_search ? watchdog_steps : 0);
+      // Block norms of the first residual, for the table.
+      std::vector<double> block_reference;
 
       double r_norm = evaluate(u, residual);
       for (unsigned int it = 0;; ++it)
         {
+          if (print_table && block_reference.empty())
+            block_reference = problem.block_norms(residual);
+          // 1. Convergence and failure tests.
           if (!std::isfinite(r_norm))
             {
               result.failure_reason = "residual is not finite";
               return false;
             }
-          if (r_norm <= tolerance * r_ref && (it > 0 || shift > 0.))
-            return true;
-          if (it >= max_iterations)
+          if (r_norm <= tolerance && (it > 0 || !pure))
             {
-              result.failure_reason = "no convergence in "
-                                      + std::to_string(max_iterations)
-                                      + " iterations";
+              result.convergence_test = "residual";
+              return true;
+            }
+          if (it >= phase.max_iterations)
+            {
+              result.failure_reason = "no convergence in " +
+                                      std::to_string(phase.max_iterations) +
+                                      " iterations";
               return false;
             }
+
+          // 2. The Newton direction.
           du = 0.;
           residual *= -1.;
           try
             {
-              // Forcing term 1e-2 |r|/|r_ref|: the linear error stays
-              // below the quadratic term of the Newton step.
-              problem.set_linear_tolerance(
-                std::min(1e-3, 1e-2 * r_norm / r_ref));
-              problem.solve_linear(shift, residual, du);
+              problem.set_linear_tolerance(forcing_term(r_norm / r_ref));
+              problem.solve_linear(phase.shift, residual, du);
             }
           catch (const std::exception &e)
             {
@@ -154,89 +272,121 @@ namespace pneuma
               result.failure_reason = "linear solver failed";
               return false;
             }
-          // Round-off floor: the residual cannot drop further (e.g. stiff
-          // plates beside a soft membrane) but the update has vanished.
-          if (shift == 0. && du_norm <= update_tolerance * u.l2_norm()
-              && r_norm <= 1e4 * tolerance * r_ref)
-            return true;
-          const BorderedVector step(du);
-          double     alpha      = 1.;
-          double     trial_norm = 0.;
-          bool       accepted   = false;
-          bool       watched    = false;
+          if (pure && du_norm <= update_tolerance * u.l2_norm() &&
+              r_norm <= floor_update * tolerance)
+            {
+              result.convergence_test = "update at the round-off floor";
+              return true;
+            }
+
+          // 3. Line search (with the watchdog) along du.
+          Step step;
           for (unsigned int ls = 0; ls <= (line_search ? max_line_search : 0);
-               ++ls, alpha *= 0.5)
+               ++ls, step.alpha *= backtrack)
             {
               u_trial = u;
-              u_trial.add(alpha, step);
-              trial_norm = evaluate(u_trial, trial);
-              if (!line_search
-                  || (std::isfinite(trial_norm)
-                      && (trial_norm <= (1. - 1e-4 * alpha) * r_norm
-                          || trial_norm <= tolerance * r_ref)))
+              u_trial.add(step.alpha, du);
+              step.norm = evaluate(u_trial, trial);
+              if (!line_search ||
+                  (std::isfinite(step.norm) &&
+                   (step.norm <= (1. - armijo * step.alpha) * r_norm ||
+                    step.norm <= tolerance)))
                 {
-                  accepted = true;
+                  step.accepted = true;
                   break;
                 }
-              // A full step that raises |r|: start a watch, or go on with
-              // the one that is on.
-              if (ls == 0 && line_search && watchdog_steps > 0 && !watch_barred
-                  && std::isfinite(trial_norm))
+              if (ls == 0 && watchdog.may_take(step.norm))
                 {
-                  if (watch_left == 0)
-                    {
-                      saved_u    = u;
-                      saved_norm = r_norm;
-                      watch_left = watchdog_steps + 1;
-                    }
-                  accepted = true;
-                  watched  = true;
+                  watchdog.start(u, r_norm);
+                  step.accepted = step.watched = true;
                   break;
                 }
             }
           if (print_table)
-            out << "    " << std::setw(4) << result.iterations
-                << std::scientific << std::setprecision(3) << "  "
-                << trial_norm / r_ref << "  "
-                << alpha * du_norm / std::max(u_trial.l2_norm(), 1e-300) << "  "
-                << shift << "  " << std::defaultfloat << std::setprecision(3)
-                << (accepted ? alpha : 0.) << (watched ? " (watchdog)" : "")
-                << std::endl;
-          if (!accepted)
             {
-              // No descent at the round-off floor of stiff parts (e.g. a
-              // penalty next to a prestressed cable): converged if |r| is
-              // already within a factor 100 of the tolerance.
-              if (shift == 0. && r_norm <= 1e2 * tolerance * r_ref)
-                return true;
+              out << "    " << std::setw(4) << result.iterations
+                  << std::scientific << std::setprecision(3) << "  "
+                  << step.norm / r_ref;
+              const auto blocks = problem.block_norms(trial);
+              for (unsigned int b = 0; b < blocks.size(); ++b)
+                out << "  " << blocks[b] / (block_reference[b] > 0. ?
+                                              block_reference[b] :
+                                              r_ref);
+              out << "  "
+                  << step.alpha * du_norm / std::max(u_trial.l2_norm(), 1e-300)
+                  << "  " << phase.shift << "  " << std::defaultfloat
+                  << std::setprecision(3) << (step.accepted ? step.alpha : 0.)
+                  << (step.watched ? " (watchdog)" : "") << std::endl;
+            }
+          if (!step.accepted)
+            {
+              if (pure && r_norm <= floor_descent * tolerance)
+                {
+                  result.convergence_test = "no descent at the round-off floor";
+                  return true;
+                }
               result.failure_reason = "line search failed";
               return false;
             }
+
+          // 4. Update.
           u        = u_trial;
           residual = trial;
-          r_norm   = trial_norm;
-          if (watch_left > 0)
+          r_norm   = step.norm;
+          if (watchdog.failed(r_norm))
             {
-              if (r_norm <= (1. - 1e-4) * saved_norm)
-                watch_left = 0; // progress: the watch ends
-              else if (--watch_left == 0)
-                {
-                  // No progress: back to the saved state; backtrack there.
-                  u            = saved_u;
-                  r_norm       = evaluate(u, residual);
-                  watch_barred = true;
-                  if (print_table)
-                    out << "    (watchdog: back to |r|/|r_ref| = "
-                        << std::scientific << std::setprecision(3)
-                        << r_norm / r_ref << std::defaultfloat << ")\n";
-                  continue;
-                }
+              u      = watchdog.saved_state();
+              r_norm = evaluate(u, residual);
+              if (print_table)
+                out << "    (watchdog: back to |r|/|r_ref| = "
+                    << std::scientific << std::setprecision(3)
+                    << r_norm / r_ref << std::defaultfloat << ")\n";
+              continue;
             }
-          else
-            watch_barred = false;
-          if (shift == 0.)
+          if (pure)
             result.residual_history.push_back(r_norm);
         }
+    }
+
+    bool
+    NewtonSolver::continuation(NonlinearProblem         &problem,
+                               BorderedVector           &u,
+                               const double              r_ref,
+                               const ConditionalOStream &out,
+                               NewtonResult             &result) const
+    {
+      using S = ContinuationSchedule;
+      BorderedVector r(u);
+      problem.assemble(u, r); // the scale is taken from K at the start
+      const double initial = problem.initial_shift(shift_factor);
+      Phase        phase;
+      phase.shift          = initial;
+      phase.max_iterations = S::inner_iterations;
+      phase.tolerance      = S::inner_tolerance;
+      unsigned int failures = 0;
+      while (result.iterations < S::budget * max_iter)
+        {
+          phase.anchor = u;
+          if (!iterate(problem, u, phase, r_ref, out, result))
+            {
+              u = phase.anchor;
+              phase.shift *= S::grow;
+              // A failure that costs no iteration (the linear solver) must
+              // not loop for ever.
+              if (++failures > S::max_failures)
+                break;
+              continue;
+            }
+          problem.assemble(u, r);
+          if (r.l2_norm() <= S::switch_ratio * r_ref ||
+              phase.shift < S::min_shift * initial)
+            break;
+          phase.shift *= S::shrink;
+        }
+      result.residual_history.assign(1, r.l2_norm());
+      result.failure_reason.clear();
+      result.convergence_test.clear();
+      return true;
     }
 
     NewtonResult
@@ -245,7 +395,7 @@ namespace pneuma
                         const ConditionalOStream &out,
                         const bool                allow_continuation) const
     {
-      NewtonResult result;
+      NewtonResult   result;
       BorderedVector r(u);
       problem.assemble(u, r);
       const double r0    = r.l2_norm();
@@ -253,67 +403,35 @@ namespace pneuma
       result.residual_history.push_back(r0);
       if (r_ref == 0.)
         {
-          result.converged = true;
+          result.converged        = true;
+          result.convergence_test = "no load";
           return result;
         }
-      if (print_table)
-        out << "      it  |r|/|r_ref|   |du|/|u|    shift     step\n";
+      print_header(problem, out);
 
       // 1. Pure Newton with backtracking.
+      Phase newton;
+      newton.max_iterations = max_iter;
+      newton.tolerance      = residual_tolerance;
       const BorderedVector u_start(u);
-      if (iterate(problem,
-                  u,
-                  0.,
-                  u,
-                  max_iter,
-                  residual_tolerance,
-                  r_ref,
-                  out,
-                  result))
+      if (iterate(problem, u, newton, r_ref, out, result))
         {
           result.converged = true;
           return result;
         }
-      if (shift_factor == 0. || !allow_continuation
-          || result.iterations >= max_iter)
+      if (shift_factor == 0. || !allow_continuation ||
+          result.iterations >= max_iter)
         return result;
 
-      // 2. Continuation in pseudo time: implicit steps of the Laplacian
-      //    flow r(u) + s L (u - u_prev) = 0, with s shrinking to zero.
+      // 2. Continuation from the start of the step, 3. pure Newton from
+      //    where it ends.
       if (print_table)
         out << "    (" << result.failure_reason
             << ": continuing with the regularised iteration)\n";
       u = u_start;
       result.residual_history.assign(1, r0);
-      problem.assemble(u, r); // the scale is taken from K at the start
-      const double unit  = problem.shift_scale();
-      double       shift = shift_factor * unit;
-      unsigned int   failures = 0;
-      BorderedVector u_prev(u);
-      while (result.iterations < 4 * max_iter)
-        {
-          u_prev = u;
-          if (!iterate(problem, u, shift, u_prev, 6, 1e-3, r_ref, out, result))
-            {
-              u = u_prev;
-              shift *= 3.;
-              // A failure that costs no iteration (the linear solver)
-              // must not loop for ever.
-              if (++failures > 20)
-                break;
-              continue;
-            }
-          problem.assemble(u, r);
-          if (r.l2_norm() <= 1e-2 * r_ref || shift < 1e-6 * shift_factor * unit)
-            break;
-          shift *= 0.5;
-        }
-
-      // 3. Pure Newton to full accuracy from there.
-      result.residual_history.assign(1, r.l2_norm());
-      result.failure_reason.clear();
-      result.converged = iterate(
-        problem, u, 0., u, max_iter, residual_tolerance, r_ref, out, result);
+      continuation(problem, u, r_ref, out, result);
+      result.converged = iterate(problem, u, newton, r_ref, out, result);
       return result;
     }
   } // namespace solvers

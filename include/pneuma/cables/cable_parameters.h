@@ -117,6 +117,9 @@ namespace pneuma
     class CableParameters
     {
     public:
+      /// "Cables/Number of cables" alone (it decides whether the subsystem exists).
+      static void
+      declare_count(ParameterHandler &prm);
       static void
       declare_parameters(ParameterHandler &prm);
       void

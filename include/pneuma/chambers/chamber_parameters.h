@@ -93,6 +93,9 @@ namespace pneuma
     {
       static constexpr unsigned int max_chambers = 8;
 
+      /// "Chambers/Number of chambers" alone (it decides whether the subsystem exists).
+      static void
+      declare_count(ParameterHandler &prm);
       static void
       declare_parameters(ParameterHandler &prm);
       void

@@ -30,8 +30,7 @@
 
 #include <pneuma/chambers/chamber_assembler.h>
 #include <pneuma/chambers/chamber_parameters.h>
-#include <pneuma/solvers/bordered_vector.h>
-#include <pneuma/solvers/linear_solver.h>
+#include <pneuma/solvers/border.h>
 
 #include <string>
 #include <vector>
@@ -64,6 +63,11 @@ namespace pneuma
         return n_total;
       }
 
+      /// The unknowns of the chambers (one group per chamber and the
+      /// chambers connected to it); initialize() calls it again.
+      void
+      setup_groups();
+
       /// The reference state at pseudo time @p t (ghosted @p u).
       void
       initialize(const LA::Vector &u, const double t);
@@ -91,30 +95,16 @@ namespace pneuma
 
       /**
        * The scaled constraint residuals for @p border and the measures
-       * @p m (assembled with vectors) at pseudo time t of begin_step; keeps
-       * the Jacobian blocks B, C, D for solve().
+       * @p m (assembled with vectors) at pseudo time t of begin_step; writes
+       * the Jacobian blocks B, C, D and the scales of these unknowns into
+       * rows and columns @p offset.. of @p coupling.
        */
       void
       evaluate(const Vector<double>               &border,
                const std::vector<ChamberMeasures> &m,
-               Vector<double>                     &residual);
-
-      /**
-       * Solve the bordered system with the factorized field block (the
-       * caller has called solver.factorize(K)).
-       */
-      void
-      solve(solvers::LinearSolver          &solver,
-            const LA::SparseMatrix         &K,
-            const solvers::BorderedVector &rhs,
-            solvers::BorderedVector       &dx) const;
-
-      /// y = J x with the bordered Jacobian of the last evaluate() (the
-      /// field block @p K), for the finite-difference check.
-      void
-      vmult(const LA::SparseMatrix         &K,
-            const solvers::BorderedVector &x,
-            solvers::BorderedVector       &y) const;
+               Vector<double>                     &residual,
+               solvers::BorderCoupling            &coupling,
+               const unsigned int                  offset) const;
 
       /// Force scale of the chamber loads (for the residual reference).
       double
@@ -184,11 +174,6 @@ namespace pneuma
       double                   time    = 0.;
       std::vector<double>      unknown_scale, residual_scale;
       double                   force_reference = 0.;
-
-      // Jacobian blocks of the last evaluate().
-      std::vector<LA::Vector> B, C;
-      std::vector<bool>       has_B, has_C;
-      FullMatrix<double>      D;
 
       std::vector<ChamberReport> chamber_reports;
     };

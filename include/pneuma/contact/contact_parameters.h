@@ -52,6 +52,9 @@ namespace pneuma
     class ContactParameters
     {
     public:
+      /// "Contact/Number of pairs" alone (it decides whether the subsystem exists).
+      static void
+      declare_count(ParameterHandler &prm);
       static void
       declare_parameters(ParameterHandler &prm);
       /// @p n_cables: cables declared, to check the pair's cable.

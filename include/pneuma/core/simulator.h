@@ -2,20 +2,22 @@
 
 /**
  * @file
- * The Simulator owns a pneuma run: the membrane mesh and its unknowns, the
- * loads and boundary conditions, the Newton solver with adaptive load
- * stepping through the load stages, and the output. The header is kept
- * light (the implementation is private) so that tests and the main program
- * compile fast.
+ * The Simulator: one pneuma run. It reads the parameters of the Model (the
+ * coupled subsystems), of the solution strategy (the static load path) and
+ * of the outputs, runs the strategy over the model, and writes
+ * history.csv, summary.json, the VTU files and the regression-test output
+ * from one statistics table (doc/architecture.md "Data flow"). The header
+ * is light so that tests and the main program compile fast.
  */
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <array>
+#include <pneuma/core/input_layout.h>
+#include <pneuma/core/statistics.h>
+
 #include <memory>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace pneuma
@@ -28,122 +30,61 @@ namespace pneuma
     solver_failed = 2
   };
 
-  /// State of one chamber (doc/user-guide.md "Chambers").
-  struct ChamberState
+  /// What a finished run reports.
+  struct RunResult
   {
-    double pressure = 0., absolute_pressure = 0., volume = 0.,
-           gas_volume = 0., liquid_volume = 0., level = 0.,
-           wetted_area = 0., gas_amount = 0., pv_kappa = 0.;
-  };
-
-  /// State of one cable (doc/user-guide.md "Cables").
-  struct CableState
-  {
-    /// Largest and smallest axial force [N], current length [m].
-    double max_force = 0., min_force = 0., length = 0.;
-    /// Solid-beam: largest bending and torsion moments [N m].
-    double max_bending = 0., max_torsion = 0.;
-    /// Solid-beam with an end moment: rotation of the end section about the
-    /// moment axis [rad].
-    double end_rotation = 0.;
-    /// Support reactions (force on the cable) at the start and end [N].
-    std::array<double, 3> start_reaction{{0., 0., 0.}},
-      end_reaction{{0., 0., 0.}};
-    /// Displacements of the start, end and middle node [m].
-    std::array<double, 3> start_displacement{{0., 0., 0.}},
-      end_displacement{{0., 0., 0.}}, mid_displacement{{0., 0., 0.}};
-  };
-
-  /// State of one contact pair (doc/user-guide.md "Contact").
-  struct ContactState
-  {
-    unsigned int active_points = 0, points = 0;
-    /// Integral of the contact line load [N], resultant force on the
-    /// cable [N], largest penetration [m].
-    double                total_force = 0., max_penetration = 0.;
-    std::array<double, 3> force{{0., 0., 0.}};
-    /// Friction: slipping points, integral of the tangential load [N].
-    unsigned int slip_points    = 0;
-    double       friction_force = 0.;
-  };
-
-  /// What a finished run reports (also written to summary.json).
-  struct RunSummary
-  {
-    int          exit_code = success;
-    std::string  message;
-    unsigned int n_cells = 0, n_cable_cells = 0, n_dofs = 0, n_steps = 0, n_cutbacks = 0,
-                 n_newton_iterations = 0, n_linear_solves = 0,
-                 n_factorizations = 0, n_krylov_iterations = 0;
-    double final_time = 0., wall_seconds = 0.;
-    /// Displacement at each monitor point at the end of the run.
-    std::vector<std::array<double, 3>> monitor_displacements;
-    /// Reference position of each monitor point (the nearest vertex).
-    std::vector<std::array<double, 3>> monitor_positions;
-    /// Enclosed volume, reference and current (closed surfaces only).
-    double initial_volume = 0., volume = 0.;
-    /// Sum of the reactions at prescribed dofs and of the external loads.
-    std::array<double, 3> reaction{{0., 0., 0.}}, applied_load{{0., 0., 0.}};
-    /// Newton residual norms of the last load step.
-    std::vector<double> last_residual_history;
-    /// Chamber states at the end, and after every converged step (time,
-    /// states); empty without chambers.
-    std::vector<ChamberState> chambers;
-    std::vector<std::pair<double, std::vector<ChamberState>>> chamber_history;
-    /// Cable states at the end (empty without cables).
-    std::vector<CableState> cables;
-    /// Contact pair states at the end (empty without contact).
-    std::vector<ContactState> contact;
-    /// Newton iterations of every converged step.
+    int         exit_code = success;
+    std::string message;
+    /// The row of summary.json (the last converged state and the counts).
+    Statistics summary{true};
+    /// One row per converged step (the reference state first), as in
+    /// history.csv.
+    std::vector<Statistics> history;
+    /// Newton iterations of every converged step, and |r| of the last
+    /// step's iterations.
     std::vector<unsigned int> step_iterations;
-    /// Adaptive refinement: one record per cycle (empty without).
-    struct Cycle
-    {
-      unsigned int                       n_cells = 0, n_dofs = 0,
-                                         n_newton_iterations = 0;
-      int                                exit_code = success;
-      double                             volume    = 0.;
-      std::vector<std::array<double, 3>> monitor_displacements;
-    };
-    std::vector<Cycle> cycles;
-  };
+    std::vector<double>       last_residual_history;
+    /// Adaptive refinement: the summary row of every cycle.
+    std::vector<Statistics> cycles;
 
-  /// Result of a finite-difference check of the tangent.
-  struct TangentCheck
-  {
-    double relative_error = 0.;
-    double tangent_norm   = 0.;
+    /// A value of the summary ("c1_pressure", "m0_u_x", "steps").
+    double
+    get(const std::string &column) const
+    {
+      return summary.get(column);
+    }
   };
 
   /// One pneuma run, configured by a ParameterHandler.
   class Simulator
   {
   public:
-    explicit Simulator(const MPI_Comm comm);
+    /// The run that @p layout describes (its subsystems are made here).
+    Simulator(const MPI_Comm comm, const InputLayout &layout);
     ~Simulator();
 
-    /// Declare every parameter of a run.
-    static void
+    /// Declare the parameters of this run, bound to its components.
+    void
     declare_parameters(dealii::ParameterHandler &prm);
 
-    /// Read the parameters; throws InputError with a clear message.
+    /// Check and derive after the input is read; throws InputError.
     void
     parse_parameters(dealii::ParameterHandler &prm);
 
-    /// Build the mesh, check it against the input, and set up the system.
+    /// Build the meshes, check them against the input, set up the system.
     void
     setup();
 
-    /// Run all load stages; returns the summary (and writes outputs).
-    RunSummary
+    /// Run the load path; returns the result (and writes the outputs).
+    RunResult
     run();
 
     /**
-     * Compare the assembled tangent at the current state plus a random
-     * perturbation of size @p amplitude with central finite differences of
-     * the residual (step @p h), at pseudo time @p t.
+     * Compare the assembled tangent at a smooth perturbation of size
+     * @p amplitude with central finite differences of the residual (step
+     * @p h), at pseudo time @p t; returns {relative error, |K d|}.
      */
-    TangentCheck
+    std::pair<double, double>
     check_tangent(const double t, const double amplitude, const double h);
 
   private:
@@ -152,12 +93,18 @@ namespace pneuma
   };
 
   /**
-   * Declare all parameters, read @p file (.prm or .json) and apply the
-   * "Path/To/Entry=value" overrides; throws InputError naming the file or
-   * parameter.
+   * Read @p file (.prm or .json) into @p prm (declared) and apply the
+   * "Path/To/Entry=value" @p overrides; throws InputError naming the file
+   * or parameter.
    */
   void
-  read_parameters(dealii::ParameterHandler       &prm,
-                  const std::string              &file,
-                  const std::vector<std::string> &overrides = {});
+  parse_input(dealii::ParameterHandler       &prm,
+              const std::string              &file,
+              const std::vector<std::string> &overrides = {});
+
+  /// Same, for parameter text in .prm syntax (tests).
+  void
+  parse_input_text(dealii::ParameterHandler       &prm,
+                   const std::string              &text,
+                   const std::vector<std::string> &overrides = {});
 } // namespace pneuma

@@ -39,6 +39,10 @@ namespace pneuma
     class SceneGenerator
     {
     public:
+      /// "Geometry/Type" alone (it decides whether there is a membrane).
+      static void
+      declare_type(ParameterHandler &prm);
+      /// The other entries of "Geometry".
       static void
       declare_parameters(ParameterHandler &prm);
       void

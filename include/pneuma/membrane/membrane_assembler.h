@@ -77,7 +77,8 @@ namespace pneuma
              const DoFHandler<2, 3> &dof_handler,
              const unsigned int      degree);
 
-      /// Assemble at the ghosted displacement @p u as @p request asks.
+      /// Add the terms at the ghosted displacement @p u to the targets of
+      /// @p request (the caller zeroes them).
       void
       assemble(const LA::Vector                &u,
                const AffineConstraints<double> &constraints,

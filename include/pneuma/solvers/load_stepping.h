@@ -23,7 +23,9 @@ namespace pneuma
     class LoadStepping
     {
     public:
-      static void
+      /// Declare the entries, bound to the members (their initial values
+      /// are the defaults).
+      void
       declare_parameters(ParameterHandler &prm);
       void
       parse_parameters(ParameterHandler &prm);
@@ -65,10 +67,10 @@ namespace pneuma
       finished(const double t) const;
 
     private:
-      std::vector<double> stage_ends;
-      double              initial_increment = 1., minimum_increment = 1e-4,
+      std::vector<double> stage_ends{1.};
+      double              initial_increment = 0.25, minimum_increment = 1e-4,
              maximum_increment = 1., growth_factor = 1.5, cut_back_factor = 0.5;
-      unsigned int easy_iterations = 4;
+      unsigned int easy_iterations = 5;
     };
   } // namespace solvers
 } // namespace pneuma

@@ -2,19 +2,36 @@
 
 /**
  * @file
- * Newton-Raphson for one load step (step-44 style), with a backtracking
- * line search and a Levenberg-Marquardt safeguard.
+ * Newton-Raphson for one load step in the shape of step-44: one loop that
+ * assembles, tests convergence, solves and updates, with three small
+ * policies beside it (doc/theory.md "Newton"):
  *
- * A step is accepted when it reduces the residual norm (Armijo). When pure
- * Newton fails (a flat, unstressed membrane has no out-of-plane stiffness),
- * the step continues in pseudo time: a sequence of implicit steps
- * \f$r(u_{k+1}) + s_k L\,(u_{k+1} - u_k) = 0\f$ with the vector surface
- * Laplacian \f$L_{ij} = \int \nabla_S N_i\cdot\nabla_S N_j\,dA\f$ (the
- * geometric stiffness of a unit isotropic prestress), scaled by
- * \f$\bar K/\bar L\f$. Each is well posed; s shrinks by 4 after each
- * success and grows by 4 after a failure. When |r| has dropped, pure Newton
- * finishes the step: the regularisation is gone at convergence, so the
- * converged state is the exact equilibrium and the final rate quadratic.
+ * - **LineSearch**: backtracking on the residual norm with the Armijo
+ *   condition \f$|r(u+\alpha\,\delta u)| \le (1 - c\,\alpha)|r(u)|\f$,
+ *   halving \f$\alpha\f$.
+ * - **Watchdog** (non-monotone acceptance, Chamberlain et al. 1982): a
+ *   full step that raises |r| is still taken from a saved state; if |r|
+ *   has not dropped below the saved value within a few more iterations,
+ *   the saved state is restored and the line search backtracks there.
+ * - **Continuation** in pseudo time for a start without stiffness (a flat,
+ *   unstressed membrane): implicit steps
+ *   \f$r(u_{k+1}) + s_k L\,(u_{k+1} - u_k) = 0\f$ with the vector surface
+ *   Laplacian \f$L\f$ (the geometric stiffness of a unit prestress), scaled
+ *   by \f$\bar K/\bar L\f$. \f$s\f$ halves after each successful implicit
+ *   step and triples after a failed one; once |r| has dropped by
+ *   `switch_ratio`, pure Newton finishes the step. The regularisation is
+ *   gone at convergence: the converged state is the exact equilibrium and
+ *   the final rate is quadratic.
+ *
+ * Convergence is declared by one of three named tests (NewtonResult::
+ * convergence_test): "residual" (|r| <= tol |r_ref|), "update at the
+ * round-off floor" (|du| <= tol_u |u| while |r| is within `floor_update`
+ * of the tolerance) or "no descent at the round-off floor" (no step reduces
+ * |r| while it is within `floor_descent` of the tolerance). The reference
+ * is \f$|r_{ref}| = \max(|r_0|, |f|)\f$ with the problem's force scale
+ * |f|. The table prints, per iteration, the total residual and each block
+ * (membrane, cables, chambers, ...) normalized by its value at the first
+ * iteration.
  */
 
 #include <deal.II/base/conditional_ostream.h>
@@ -22,6 +39,8 @@
 
 #include <pneuma/solvers/bordered_vector.h>
 
+#include <functional>
+#include <string>
 #include <vector>
 
 namespace pneuma
@@ -35,8 +54,8 @@ namespace pneuma
     {
     public:
       virtual ~NonlinearProblem() = default;
-      /// Residual at @p u (owned field, border of chamber unknowns), and
-      /// the tangent it keeps.
+      /// Residual at @p u (owned field, border unknowns), and the tangent
+      /// it keeps for solve_linear().
       virtual void
       assemble(const BorderedVector &u, BorderedVector &residual) = 0;
       /// Solve J du = rhs with the last assembled Jacobian J, its field
@@ -45,14 +64,14 @@ namespace pneuma
       solve_linear(const double          shift,
                    const BorderedVector &rhs,
                    BorderedVector       &du) = 0;
-      /// The scale mean(diag K)/mean(diag L) that makes the shift
-      /// dimensionless.
+      /// The first continuation shift for a shift @p factor relative to
+      /// the scale mean(diag K)/mean(diag L) of the last assembled K.
       virtual double
-      shift_scale() = 0;
+      initial_shift(const double factor) = 0;
       /// y = L x with the regularisation matrix L (zero on the border).
       virtual void
       laplacian_vmult(const BorderedVector &x, BorderedVector &y) = 0;
-      /// Norm of the external load vector, for the residual reference.
+      /// Force scale of the loads, for the residual reference.
       virtual double
       load_norm() = 0;
       /// Forcing term of an inexact Newton step: the linear solve may stop
@@ -62,33 +81,50 @@ namespace pneuma
       {
         (void)eta;
       }
+      /// Names of the residual blocks (membrane, cables, chambers, ...).
+      virtual std::vector<std::string>
+      block_names() const
+      {
+        return {};
+      }
+      /// The l2 norm of each block of @p r, in the order of block_names().
+      virtual std::vector<double>
+      block_norms(const BorderedVector &r) const
+      {
+        (void)r;
+        return {};
+      }
     };
 
     /// Convergence history of one Newton solve.
     struct NewtonResult
     {
-      bool                converged  = false;
-      unsigned int        iterations = 0;
+      bool         converged  = false;
+      unsigned int iterations = 0;
+      /// |r| after each accepted iteration of the final pure Newton phase.
       std::vector<double> residual_history;
       std::string         failure_reason;
+      /// The test that declared convergence (empty if none did).
+      std::string convergence_test;
     };
 
     /// "Newton" subsection and the iteration.
     class NewtonSolver
     {
     public:
-      static void
+      /// Declare the entries, bound to the members (their initial values
+      /// are the defaults).
+      void
       declare_parameters(ParameterHandler &prm);
       void
       parse_parameters(ParameterHandler &prm);
 
       /**
        * Iterate from @p u (owned) to equilibrium; @p u holds the result.
-       * The pseudo-time continuation is used only if
-       * @p allow_continuation (the step starts from the unstressed state);
-       * elsewhere a failed Newton step is left to the load-step cut-back, so
-       * that no spurious branch (e.g. an everted sphere past a limit point)
-       * is picked up.
+       * The continuation is used only if @p allow_continuation (the step
+       * starts from the unstressed state); elsewhere a failed Newton step
+       * is left to the load-step cut-back, so that no spurious branch (an
+       * everted sphere past a limit point) is picked up.
        */
       NewtonResult
       solve(NonlinearProblem         &problem,
@@ -102,26 +138,40 @@ namespace pneuma
         return max_iter;
       }
 
-      /// The first continuation shift relative to NonlinearProblem::
-      /// shift_scale().
-      double
-      regularisation_factor() const
-      {
-        return shift_factor;
-      }
+      /// The forcing term eta of an inexact step at |r|/|r_ref| = @p ratio:
+      /// eta = min(max_forcing, forcing_ratio |r|/|r_ref|), so that the
+      /// linear error stays below the quadratic term of the Newton step.
+      static double
+      forcing_term(const double ratio);
 
     private:
-      /// Newton on r(u) + shift L (u - u_anchor) = 0 to |r_s| <= tol r_ref.
+      /// One Newton solve of r(u) + shift L (u - u_anchor) = 0.
+      struct Phase
+      {
+        double         shift = 0.;
+        BorderedVector anchor;
+        unsigned int   max_iterations = 0;
+        /// Converged at |r_s| <= tolerance |r_ref|.
+        double tolerance = 0.;
+      };
+
       bool
       iterate(NonlinearProblem         &problem,
               BorderedVector           &u,
-              const double              shift,
-              const BorderedVector     &u_anchor,
-              const unsigned int        max_iterations,
-              const double              tolerance,
+              const Phase              &phase,
               const double              r_ref,
               const ConditionalOStream &out,
               NewtonResult             &result) const;
+
+      bool
+      continuation(NonlinearProblem         &problem,
+                   BorderedVector           &u,
+                   const double              r_ref,
+                   const ConditionalOStream &out,
+                   NewtonResult             &result) const;
+
+      void
+      print_header(NonlinearProblem &problem, const ConditionalOStream &out) const;
 
       unsigned int max_iter           = 25;
       double       residual_tolerance = 1e-8;

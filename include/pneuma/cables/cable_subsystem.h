@@ -1,0 +1,103 @@
+#pragma once
+
+/**
+ * @file
+ * The cables as a subsystem of the coupled model (core/subsystem.h): each
+ * cable on its own `Triangulation<1,3>` and `DoFHandler`, numbered after
+ * the membrane dofs, owned by rank 0 (cables/cable_system.h,
+ * doc/theory.md "Cables"). Present only when "Cables/Number of cables" is
+ * positive.
+ */
+
+#include <pneuma/cables/cable_parameters.h>
+#include <pneuma/cables/cable_system.h>
+#include <pneuma/core/subsystem.h>
+
+namespace pneuma
+{
+  namespace cables
+  {
+    /// The cable subsystem.
+    class CableSubsystem : public Subsystem
+    {
+    public:
+      explicit CableSubsystem(Model &model);
+
+      /// "Cables/Number of cables".
+      static void
+      declare_switches(ParameterHandler &prm);
+      static bool
+      is_active(const InputLayout &layout);
+
+      std::string
+      name() const override
+      {
+        return "cables";
+      }
+      void
+      declare_parameters(ParameterHandler &prm,
+                         const InputLayout &layout) override;
+      void
+      parse_parameters(ParameterHandler &prm) override;
+
+      types::global_dof_index
+      setup_unknowns(const types::global_dof_index first,
+                     const MPI_Comm                comm) override;
+      void
+      add_locally_owned(IndexSet &owned) const override;
+      void
+      add_update_constraints(AffineConstraints<double> &c) const override;
+      void
+      add_sparsity(DynamicSparsityPattern          &dsp,
+                   const AffineConstraints<double> &constraints) const override;
+      void
+      add_regularisation(const AffineConstraints<double> &constraints,
+                         LA::SparseMatrix                &L) const override;
+      void
+      add_near_null_space(const IndexSet                   &owned,
+                          std::vector<std::vector<double>> &modes) const override;
+      double
+      initial_shift(const double                     factor,
+                    const UnknownRange              &range,
+                    const LA::SparseMatrix          &K,
+                    const LA::SparseMatrix          &L,
+                    const LA::Vector                &external,
+                    const AffineConstraints<double> &constraints) const override;
+
+      void
+      set_prescribed_values(const double t, LA::Vector &field) const override;
+      void
+      assemble(const Assembly &a) override;
+      void
+      commit_step(const double          t,
+                  const LA::Vector     &field,
+                  const Vector<double> &border) override;
+      double
+      force_scale(const LA::Vector &field) const override;
+      void
+      add_statistics(Statistics &statistics, const LA::Vector &field) const override;
+      void
+      write_output_files(const std::string &directory,
+                         const unsigned int step,
+                         const double       t,
+                         const LA::Vector  &field) override;
+
+      /// The cable block (for the contact).
+      CableSystem &
+      system()
+      {
+        return cables;
+      }
+      const CableParameters &
+      definitions() const
+      {
+        return parameters;
+      }
+
+    private:
+      Model          &model;
+      CableParameters parameters;
+      CableSystem     cables;
+    };
+  } // namespace cables
+} // namespace pneuma

@@ -1,0 +1,115 @@
+#pragma once
+
+/**
+ * @file
+ * The chambers as a subsystem of the coupled model (core/subsystem.h): one
+ * or two border unknowns per chamber group (gas pressure, free-surface
+ * level) with their constraints, and the filling loads on the membrane's
+ * walls, added to the membrane's cell loop (chambers/chamber_system.h,
+ * doc/theory.md "Chambers"). Present only when "Chambers/Number of
+ * chambers" is positive.
+ */
+
+#include <pneuma/chambers/chamber_assembler.h>
+#include <pneuma/chambers/chamber_parameters.h>
+#include <pneuma/chambers/chamber_system.h>
+#include <pneuma/core/subsystem.h>
+#include <pneuma/membrane/membrane_subsystem.h>
+
+#include <memory>
+
+namespace pneuma
+{
+  namespace chambers
+  {
+    /// The chamber subsystem.
+    class ChamberSubsystem : public Subsystem, public membrane::CellTerms
+    {
+    public:
+      explicit ChamberSubsystem(Model &model);
+
+      /// "Chambers/Number of chambers".
+      static void
+      declare_switches(ParameterHandler &prm);
+      static bool
+      is_active(const InputLayout &layout);
+
+      std::string
+      name() const override
+      {
+        return "chambers";
+      }
+      void
+      declare_parameters(ParameterHandler &prm,
+                         const InputLayout &layout) override;
+      void
+      parse_parameters(ParameterHandler &prm) override;
+
+      types::global_dof_index
+      setup_unknowns(const types::global_dof_index first,
+                     const MPI_Comm                comm) override;
+      unsigned int
+      n_border_unknowns() const override
+      {
+        return system.n_unknowns();
+      }
+      void
+      finish_setup() override;
+
+      void
+      initialize(const LA::Vector &field, const double t) override;
+      std::string
+      begin_step(const double t, const LA::Vector &field, bool &grown) override;
+      Vector<double>
+      border() const override
+      {
+        return system.pack();
+      }
+      void
+      assemble(const Assembly &a) override;
+      void
+      commit_step(const double          t,
+                  const LA::Vector     &field,
+                  const Vector<double> &border) override;
+      double
+      force_scale(const LA::Vector &field) const override;
+      void
+      add_statistics(Statistics &statistics, const LA::Vector &field) const override;
+      void
+      add_output_fields(const LA::Vector &field) override;
+
+      // ---- membrane::CellTerms: the filling loads on the walls
+      void
+      begin(const Assembly &a) override;
+      void
+      cell(const DoFHandler<2, 3>::active_cell_iterator &cell,
+           const FEValues<2, 3>                         &fe_values,
+           const std::vector<double>                    &local_u,
+           FullMatrix<double>                           *cell_matrix,
+           Vector<double>                               *cell_residual,
+           const std::vector<types::global_dof_index>   &dof_indices) override;
+      void
+      end() override;
+      void
+      add_loads(const LA::Vector                &u,
+                const AffineConstraints<double> &constraints,
+                LA::Vector                      &residual,
+                LA::Vector                      &external) const override;
+
+    private:
+      /// This subsystem's part of the border vector @p border.
+      Vector<double>
+      own_part(const Vector<double> &border) const;
+
+      Model                                &model;
+      membrane::MembraneSubsystem          &membrane;
+      ChamberParameters                     parameters;
+      ChamberAssembler                      assembler;
+      ChamberSystem                         system;
+      std::vector<ChamberLoad>              pass_loads;
+      std::vector<ChamberMeasures>          measures;
+      std::unique_ptr<ChamberAssembler::Pass> pass;
+      ChamberCellData                       output_cells;
+    };
+  } // namespace chambers
+} // namespace pneuma

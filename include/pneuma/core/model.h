@@ -1,0 +1,262 @@
+#pragma once
+
+/**
+ * @file
+ * The Model: the coupled system of the subsystems a scene activates, its
+ * global unknowns (field dofs in subsystem order, then the border), its
+ * constraints, tangent and regularisation matrices, and the linear solver
+ * of its bordered systems (doc/architecture.md).
+ *
+ * The model knows nothing of how it is driven: a solution strategy (the
+ * static load path today; arc-length or explicit dynamics later) calls
+ * begin_step / Newton's NonlinearProblem interface / check_state /
+ * commit_step on it. The model holds no history of the path beyond what
+ * its subsystems commit.
+ */
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/affine_constraints.h>
+
+#include <pneuma/core/linear_algebra.h>
+#include <pneuma/core/subsystem.h>
+#include <pneuma/loads/loads.h>
+#include <pneuma/solvers/border.h>
+#include <pneuma/solvers/linear_solver.h>
+#include <pneuma/solvers/newton_solver.h> // NonlinearProblem
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace pneuma
+{
+  class InputLayout;
+
+  /// Result of a finite-difference check of the tangent.
+  struct TangentCheck
+  {
+    double relative_error = 0.;
+    double tangent_norm   = 0.;
+  };
+
+  /// The coupled discrete system.
+  class Model : public solvers::NonlinearProblem
+  {
+  public:
+    /// The subsystems that @p layout activates, in registration order.
+    Model(const MPI_Comm comm, const InputLayout &layout);
+    ~Model() override;
+
+    // ---- parameters
+    void
+    declare_parameters(dealii::ParameterHandler &prm,
+                       const InputLayout        &layout);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    // ---- setup
+    /// Set every subsystem up: unknowns, constraints, matrices.
+    void
+    setup();
+    /// Adaptive refinement cycles after the first run (0: none).
+    unsigned int
+    refinement_cycles() const;
+    /// Refine the meshes by the converged @p state and set up again.
+    void
+    refine(const solvers::BorderedVector &state);
+    /// Rebuild the sparsity pattern and matrices (couplings have grown).
+    void
+    rebuild_matrices();
+
+    // ---- access
+    MPI_Comm
+    mpi_communicator() const
+    {
+      return comm;
+    }
+    /// The subsystem of type T, or nullptr if the scene has none.
+    template <typename T>
+    T *
+    find() const
+    {
+      for (const auto &s : subsystems)
+        if (auto *p = dynamic_cast<T *>(s.get()))
+          return p;
+      return nullptr;
+    }
+    const std::vector<std::unique_ptr<Subsystem>> &
+    all() const
+    {
+      return subsystems;
+    }
+    /// The loads shared by the subsystems (gravity, pressure curves).
+    const loads::Loads &
+    loads() const
+    {
+      return load_functions;
+    }
+    const dealii::IndexSet &
+    locally_owned() const
+    {
+      return owned;
+    }
+    const dealii::IndexSet &
+    locally_relevant() const
+    {
+      return relevant;
+    }
+    const dealii::AffineConstraints<double> &
+    constraints() const
+    {
+      return update_constraints;
+    }
+    const dealii::AffineConstraints<double> &
+    kinematic_constraints() const
+    {
+      return kinematic;
+    }
+    /// Global unknowns of subsystem @p s (field range).
+    UnknownRange
+    range(const Subsystem &s) const;
+    /// First border row of subsystem @p s.
+    unsigned int
+    border_offset(const Subsystem &s) const;
+    unsigned int
+    n_border() const
+    {
+      return coupling.size();
+    }
+    dealii::types::global_dof_index
+    n_dofs() const
+    {
+      return owned.size();
+    }
+    solvers::LinearSolver &
+    linear_solver()
+    {
+      return solver;
+    }
+    dealii::TimerOutput &
+    timer()
+    {
+      return *timers;
+    }
+    void
+    set_timer(dealii::TimerOutput &t)
+    {
+      timers = &t;
+    }
+    unsigned int
+    n_linear_solves() const
+    {
+      return linear_solves;
+    }
+
+    // ---- the state
+    /// A field vector of the global layout (owned), and a ghosted one.
+    LA::Vector
+    make_field() const;
+    /// The ghosted copy of @p field (a member buffer).
+    const LA::Vector &
+    ghost(const LA::Vector &field);
+    /// The reference state at pseudo time 0: prescribed values, every
+    /// subsystem initialized.
+    solvers::BorderedVector
+    initial_state();
+    /**
+     * Prepare the step to @p t from the converged @p state: prescribed
+     * values, dependent dofs, contact candidates (matrices rebuilt if they
+     * grow), border predictions. Returns why the step is impossible, or an
+     * empty string.
+     */
+    std::string
+    begin_step(const double t, solvers::BorderedVector &state);
+    /// Why the converged @p state is not admissible, or an empty string.
+    std::string
+    check_state(const solvers::BorderedVector &state);
+    /// Accept the converged @p state at @p t.
+    void
+    commit_step(const double t, const solvers::BorderedVector &state);
+    /// Renew reports that depend on the last assembly (contact points) at
+    /// the converged @p state.
+    void
+    refresh(const solvers::BorderedVector &state);
+    /// Statistics of every subsystem at @p state (call reduce() after).
+    void
+    add_statistics(Statistics &statistics, const solvers::BorderedVector &state);
+    /// Write every subsystem's output files of @p state at @p step.
+    void
+    write_output(const std::string             &directory,
+                 const unsigned int             step,
+                 const double                   t,
+                 const solvers::BorderedVector &state);
+    /// Print only on rank 0 (quiet runs print nothing).
+    dealii::ConditionalOStream &
+    out()
+    {
+      return pcout;
+    }
+
+    // ---- NonlinearProblem
+    void
+    assemble(const solvers::BorderedVector &u,
+             solvers::BorderedVector       &residual) override;
+    void
+    solve_linear(const double                   shift,
+                 const solvers::BorderedVector &rhs,
+                 solvers::BorderedVector       &du) override;
+    double
+    initial_shift(const double factor) override;
+    void
+    laplacian_vmult(const solvers::BorderedVector &x,
+                    solvers::BorderedVector       &y) override;
+    double
+    load_norm() override;
+    void
+    set_linear_tolerance(const double eta) override
+    {
+      solver.set_forcing(eta);
+    }
+    std::vector<std::string>
+    block_names() const override;
+    std::vector<double>
+    block_norms(const solvers::BorderedVector &r) const override;
+
+    /// Pseudo time of the loads in assemble().
+    double current_time = 0.;
+
+    /**
+     * Compare the assembled tangent at @p state plus a smooth perturbation
+     * of size @p amplitude with central finite differences of the residual
+     * (step @p h) at pseudo time @p t, on admissible states.
+     */
+    TangentCheck
+    check_tangent(const double t, const double amplitude, const double h);
+
+  private:
+    /// Dependent dofs (plates, ties, hanging nodes) follow their masters.
+    void
+    apply_kinematic_constraints(LA::Vector &field);
+    void
+    make_constraints();
+
+    MPI_Comm                                comm;
+    dealii::ConditionalOStream              pcout;
+    std::vector<std::unique_ptr<Subsystem>> subsystems;
+    std::vector<UnknownRange>               ranges;
+    std::vector<unsigned int>               border_offsets;
+    loads::Loads                            load_functions;
+    solvers::LinearSolver                   solver;
+    dealii::TimerOutput                    *timers = nullptr;
+    std::unique_ptr<dealii::TimerOutput>    own_timer;
+
+    dealii::IndexSet                  owned, relevant;
+    dealii::AffineConstraints<double> kinematic, update_constraints;
+    LA::SparseMatrix                  tangent, laplacian;
+    LA::Vector                        external, ghosted;
+    solvers::BorderCoupling           coupling;
+    unsigned int                      linear_solves = 0;
+  };
+} // namespace pneuma

@@ -1,0 +1,90 @@
+#pragma once
+
+/**
+ * @file
+ * The files of a run (doc/user-guide.md "Outputs"), all written from
+ * Statistics rows (core/statistics.h): history.csv (one row per converged
+ * step, columns "name [unit]"), summary.json (the final row, grouped:
+ * top-level values, then "chambers", "cables", ... arrays, a "units" map,
+ * the timings), and the regression-test output "output" (the entries
+ * marked for tests, at fixed precision, round-off zeros printed as 0).
+ */
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+
+#include <pneuma/core/statistics.h>
+
+#include <fstream>
+#include <memory>
+#include <string>
+
+namespace pneuma
+{
+  /// The "Output" subsection and the writers of history and summary.
+  class OutputWriter
+  {
+  public:
+    void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /// Create the directory (rank 0) and start history.csv; throws
+    /// InputError naming Output/Directory if it cannot be written.
+    void
+    prepare(const MPI_Comm comm);
+
+    /// Append a row to history.csv (the first row writes the header).
+    void
+    history_row(const Statistics &row);
+
+    /// Write summary.json from @p row (with @p message after the exit code
+    /// and @p timer's sections at the end).
+    void
+    summary(const Statistics          &row,
+            const std::string         &message,
+            const dealii::TimerOutput &timer) const;
+
+    /// Write the regression-test output "output" in the working directory
+    /// if Output/Test output is set.
+    void
+    test_output(const Statistics &row) const;
+
+    const std::string &
+    directory() const
+    {
+      return output_directory;
+    }
+    void
+    set_directory(const std::string &d)
+    {
+      output_directory = d;
+    }
+    bool
+    write_vtu() const
+    {
+      return vtu;
+    }
+    unsigned int
+    vtu_interval() const
+    {
+      return interval;
+    }
+    bool
+    quiet() const
+    {
+      return be_quiet;
+    }
+
+  private:
+    std::string                    output_directory = "output";
+    bool                           vtu              = true;
+    unsigned int                   interval         = 1;
+    bool                           be_quiet         = false;
+    bool                           test             = false;
+    bool                           root             = true;
+    std::unique_ptr<std::ofstream> history;
+    unsigned int                   history_columns = 0;
+  };
+} // namespace pneuma

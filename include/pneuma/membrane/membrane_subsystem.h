@@ -1,0 +1,233 @@
+#pragma once
+
+/**
+ * @file
+ * The membrane as a subsystem of the coupled model (core/subsystem.h): the
+ * codimension-one mesh (`parallel::distributed::Triangulation<2,3>`) with
+ * its FE_Q displacement, material regions, boundary conditions, rigid
+ * plates and junction ties, the follower-pressure, gravity and dead loads,
+ * the enclosed volume, the monitor points and the support reactions
+ * (doc/theory.md "Weak form", doc/user-guide.md "Membranes").
+ *
+ * Other subsystems that act on the membrane's cells (chambers) add their
+ * terms to its cell loop through CellTerms, so each cell matrix is
+ * distributed once.
+ */
+
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/numerics/data_out.h>
+
+#include <pneuma/core/subsystem.h>
+#include <pneuma/geometry/adaptive_refinement.h>
+#include <pneuma/geometry/junctions.h>
+#include <pneuma/geometry/scene_generator.h>
+#include <pneuma/loads/boundary_conditions.h>
+#include <pneuma/loads/rigid_regions.h>
+#include <pneuma/membrane/constitutive_law.h>
+#include <pneuma/membrane/membrane_assembler.h>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace pneuma
+{
+  namespace membrane
+  {
+    using namespace dealii;
+
+    /// Terms of another subsystem on the membrane's cells.
+    class CellTerms
+    {
+    public:
+      virtual ~CellTerms() = default;
+      /// Before the cell loop of a Newton assembly @p a.
+      virtual void
+      begin(const Assembly &a) = 0;
+      /// Add to the cell matrix and residual (either may be nullptr).
+      virtual void
+      cell(const DoFHandler<2, 3>::active_cell_iterator &cell,
+           const FEValues<2, 3>                         &fe_values,
+           const std::vector<double>                    &local_u,
+           FullMatrix<double>                           *cell_matrix,
+           Vector<double>                               *cell_residual,
+           const std::vector<types::global_dof_index>   &dof_indices) = 0;
+      /// After the cell loop.
+      virtual void
+      end() = 0;
+      /// For the reactions at the converged state @p u (ghosted): add the
+      /// loads to @p residual (as -f) and to @p external (as +f).
+      virtual void
+      add_loads(const LA::Vector                &u,
+                const AffineConstraints<double> &constraints,
+                LA::Vector                      &residual,
+                LA::Vector                      &external) const = 0;
+    };
+
+    /// The membrane subsystem.
+    class MembraneSubsystem : public Subsystem
+    {
+    public:
+      explicit MembraneSubsystem(Model &model);
+      ~MembraneSubsystem() override;
+
+      /// "Geometry/Type"; declared whether or not a membrane is present.
+      static void
+      declare_switches(ParameterHandler &prm);
+      /// A membrane unless Geometry/Type is none.
+      static bool
+      is_active(const InputLayout &layout);
+
+      std::string
+      name() const override
+      {
+        return "membrane";
+      }
+
+      void
+      declare_parameters(ParameterHandler &prm,
+                         const InputLayout &layout) override;
+      void
+      parse_parameters(ParameterHandler &prm) override;
+
+      types::global_dof_index
+      setup_unknowns(const types::global_dof_index first,
+                     const MPI_Comm                comm) override;
+      void
+      add_locally_owned(IndexSet &owned) const override;
+      void
+      add_locally_relevant(IndexSet &relevant) override;
+      void
+      add_kinematic_constraints(AffineConstraints<double> &c) const override;
+      void
+      add_update_constraints(AffineConstraints<double> &c) const override;
+      void
+      finish_setup() override;
+      void
+      add_sparsity(DynamicSparsityPattern          &dsp,
+                   const AffineConstraints<double> &constraints) const override;
+      void
+      add_regularisation(const AffineConstraints<double> &constraints,
+                         LA::SparseMatrix                &L) const override;
+      void
+      add_near_null_space(const IndexSet                   &owned,
+                          std::vector<std::vector<double>> &modes) const override;
+      double
+      initial_shift(const double                     factor,
+                    const UnknownRange              &range,
+                    const LA::SparseMatrix          &K,
+                    const LA::SparseMatrix          &L,
+                    const LA::Vector                &external,
+                    const AffineConstraints<double> &constraints) const override;
+
+      void
+      set_prescribed_values(const double t, LA::Vector &field) const override;
+      void
+      initialize(const LA::Vector &field, const double t) override;
+      void
+      assemble(const Assembly &a) override;
+      std::string
+      check_state(const LA::Vector &field) const override;
+      void
+      add_statistics(Statistics &statistics, const LA::Vector &field) const override;
+      void
+      add_output_fields(const LA::Vector &field) override;
+      void
+      write_output_files(const std::string &directory,
+                         const unsigned int step,
+                         const double       t,
+                         const LA::Vector  &field) override;
+
+      // ---- for the subsystems that couple to the membrane
+      /// Add terms to the membrane's cell loop (kept until destruction).
+      void
+      add_cell_terms(CellTerms &terms);
+      const Mapping<2, 3> &
+      mapping() const
+      {
+        return *mapping_cache;
+      }
+      const DoFHandler<2, 3> &
+      dof_handler() const
+      {
+        return dofs;
+      }
+      const parallel::distributed::Triangulation<2, 3> &
+      triangulation() const
+      {
+        return mesh;
+      }
+      const geometry::SceneGenerator &
+      geometry() const
+      {
+        return scene;
+      }
+      unsigned int
+      degree() const
+      {
+        return fe_degree;
+      }
+      /// The membrane's VTU of the current output (between
+      /// add_output_fields and write_output_files).
+      DataOut<2, 3> &
+      data_out()
+      {
+        return *output;
+      }
+      unsigned int
+      refinement_cycles() const override
+      {
+        return adaptive.cycles();
+      }
+      void
+      refine(const LA::Vector &field) override;
+
+    private:
+      /// The mapping of the current mesh, its support points cached.
+      void
+      cache_mapping();
+      /// Masters that dependent dofs refer to (share_constraints.h).
+      IndexSet
+      shared_masters() const;
+      void
+      locate_monitor_points();
+      void
+      compute_reactions(const LA::Vector      &u,
+                        std::array<double, 3> &reaction,
+                        std::array<double, 3> &applied) const;
+
+      Model                       &model;
+      MPI_Comm                     comm;
+      geometry::SceneGenerator     scene;
+      geometry::AdaptiveRefinement adaptive;
+      MaterialRegions              materials;
+      loads::BoundaryConditions    boundary_conditions;
+      loads::RigidRegions          rigid_regions;
+      unsigned int                 fe_degree = 1;
+      std::vector<Point<3>>        monitor_points;
+
+      parallel::distributed::Triangulation<2, 3> mesh;
+      bool                                       mesh_created = false;
+      std::unique_ptr<FESystem<2, 3>>            fe;
+      std::unique_ptr<Mapping<2, 3>>             mapping_cache;
+      DoFHandler<2, 3>                           dofs;
+      IndexSet                                   owned_dofs, relevant_dofs;
+      geometry::JunctionTies                     junction_ties;
+      std::unique_ptr<MembraneAssembler>         assembler;
+      std::vector<CellTerms *>                   cell_terms;
+      double                                     reference_volume = 0.;
+
+      // Monitor points: (owning rank's) dof indices of the nearest vertex.
+      std::vector<std::array<types::global_dof_index, 3>> monitor_dofs;
+      std::vector<std::array<double, 3>>                  monitor_positions;
+
+      std::unique_ptr<DataOut<2, 3>>              output;
+      std::vector<std::pair<double, std::string>> pvd_records;
+      std::vector<Vector<float>>                  output_cell_data;
+    };
+  } // namespace membrane
+} // namespace pneuma

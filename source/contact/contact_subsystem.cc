@@ -1,0 +1,163 @@
+#include <pneuma/contact/contact_subsystem.h>
+#include <pneuma/core/input_error.h>
+#include <pneuma/core/input_layout.h>
+#include <pneuma/core/model.h>
+
+namespace pneuma
+{
+  namespace contact
+  {
+    namespace
+    {
+      membrane::MembraneSubsystem &
+      the_membrane(Model &model)
+      {
+        auto *m = model.find<membrane::MembraneSubsystem>();
+        check_input(m != nullptr,
+                    "Contact/Number of pairs",
+                    "contact needs a membrane (Geometry/Type is none)");
+        return *m;
+      }
+    } // namespace
+
+    ContactSubsystem::ContactSubsystem(Model &model)
+      : model(model)
+      , membrane(the_membrane(model))
+      , cables(model.find<cables::CableSubsystem>())
+    {
+    }
+
+    void
+    ContactSubsystem::declare_switches(ParameterHandler &prm)
+    {
+      ContactParameters::declare_count(prm);
+    }
+
+    bool
+    ContactSubsystem::is_active(const InputLayout &layout)
+    {
+      return !layout.numbered("Contact", "Pair", "Contact/Number of pairs")
+                .empty();
+    }
+
+    void
+    ContactSubsystem::declare_parameters(ParameterHandler &prm,
+                                         const InputLayout &)
+    {
+      ContactParameters::declare_parameters(prm);
+    }
+
+    void
+    ContactSubsystem::parse_parameters(ParameterHandler &prm)
+    {
+      parameters.parse_parameters(prm,
+                                  cables ? cables->definitions().size() : 0);
+      contact = std::make_unique<ContactSystem>(parameters,
+                                                membrane.geometry(),
+                                                cables->system());
+    }
+
+    void
+    ContactSubsystem::add_locally_relevant(IndexSet &relevant)
+    {
+      // Every rank sees the mid-lines of the paired cables.
+      contact->setup(membrane.mapping(),
+                     membrane.dof_handler(),
+                     model.mpi_communicator());
+      relevant.add_indices(contact->cable_dofs(relevant.size()));
+      contact->update_candidates(nullptr);
+    }
+
+    void
+    ContactSubsystem::add_sparsity(
+      DynamicSparsityPattern          &dsp,
+      const AffineConstraints<double> &constraints) const
+    {
+      contact->add_sparsity(dsp, constraints);
+    }
+
+    void
+    ContactSubsystem::initialize(const LA::Vector &field, const double)
+    {
+      // Friction: points in contact at the start stick where they are.
+      refresh(field);
+      contact->commit_step();
+    }
+
+    std::string
+    ContactSubsystem::begin_step(const double,
+                                 const LA::Vector &field,
+                                 bool             &grown)
+    {
+      // New candidates of the current state; the sparsity pattern grows if
+      // they bring new couplings.
+      TimerOutput::Scope t(model.timer(), "contact search");
+      if (contact->update_candidates(&field))
+        grown = true;
+      return "";
+    }
+
+    void
+    ContactSubsystem::assemble(const Assembly &a)
+    {
+      TimerOutput::Scope t(model.timer(), "contact");
+      contact->assemble(*a.field, *a.constraints, a.tangent, a.residual);
+    }
+
+    void
+    ContactSubsystem::refresh(const LA::Vector &field)
+    {
+      contact->assemble(field, model.constraints(), nullptr, nullptr);
+    }
+
+    void
+    ContactSubsystem::commit_step(const double,
+                                  const LA::Vector &field,
+                                  const Vector<double> &)
+    {
+      // The reports and the friction anchors of the accepted state.
+      refresh(field);
+      contact->commit_step();
+    }
+
+    void
+    ContactSubsystem::add_statistics(Statistics &statistics,
+                                     const LA::Vector &) const
+    {
+      constexpr auto all = Statistics::all, summary = Statistics::summary;
+      const auto    &reports = contact->reports();
+      for (unsigned int k = 0; k < reports.size(); ++k)
+        {
+          const auto           &r = reports[k];
+          const StatisticsGroup g{"contact", "contact", "pair", k + 1};
+          statistics.add_count(g, "active_points", r.active_points, all);
+          statistics.add_count(g, "points", r.points, all & ~Statistics::history);
+          statistics.add(g, "total_force", "N", r.total_force, all);
+          statistics.add_vector(g, "force", "N", r.force, all);
+          statistics.add(g, "max_penetration", "m", r.max_penetration, all);
+          statistics.add_count(g, "slip_points", r.slip_points, summary);
+          statistics.add(g, "friction_force", "N", r.friction_force, summary);
+        }
+    }
+
+    void
+    ContactSubsystem::add_output_fields(const LA::Vector &)
+    {
+      for (const auto &pair : parameters.all())
+        cables->system().set_output_field(pair.cable,
+                                          "contact_line_load",
+                                          contact->cable_line_load(pair.cable));
+      pressure_output =
+        contact->membrane_pressure(membrane.triangulation().n_active_cells());
+      membrane.data_out().add_data_vector(pressure_output,
+                                          "contact_pressure",
+                                          DataOut<2, 3>::type_cell_data);
+    }
+  } // namespace contact
+} // namespace pneuma
+
+PNEUMA_REGISTER_SUBSYSTEM(pneuma::contact::ContactSubsystem,
+                          "contact",
+                          40,
+                          pneuma::contact::ContactSubsystem::declare_switches,
+                          pneuma::contact::ContactSubsystem::is_active)

@@ -1,0 +1,574 @@
+#include <deal.II/base/array_view.h>
+#include <deal.II/lac/sparsity_tools.h>
+
+#include <pneuma/core/input_error.h>
+#include <pneuma/core/input_layout.h>
+#include <pneuma/core/model.h>
+
+#include <cmath>
+
+namespace pneuma
+{
+  using namespace dealii;
+
+  namespace
+  {
+    std::vector<SubsystemEntry> &
+    registry()
+    {
+      static std::vector<SubsystemEntry> entries;
+      return entries;
+    }
+  } // namespace
+
+  bool
+  register_subsystem(const SubsystemEntry &entry)
+  {
+    auto &entries = registry();
+    entries.push_back(entry);
+    std::stable_sort(entries.begin(),
+                     entries.end(),
+                     [](const auto &a, const auto &b) {
+                       return a.order < b.order;
+                     });
+    return true;
+  }
+
+  const std::vector<SubsystemEntry> &
+  subsystem_entries()
+  {
+    return registry();
+  }
+
+  Model::Model(const MPI_Comm comm, const InputLayout &layout)
+    : comm(comm)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
+  {
+    for (const auto &entry : subsystem_entries())
+      if (entry.is_active(layout))
+        subsystems.push_back(entry.create(*this));
+    own_timer = std::make_unique<TimerOutput>(comm,
+                                              pcout,
+                                              TimerOutput::never,
+                                              TimerOutput::wall_times);
+    timers    = own_timer.get();
+  }
+
+  /// The direct solver refers to the tangent: release it first.
+  Model::~Model()
+  {
+    solver.reset();
+  }
+
+  // ------------------------------------------------------------------
+  // Parameters
+  // ------------------------------------------------------------------
+  void
+  Model::declare_parameters(ParameterHandler &prm, const InputLayout &layout)
+  {
+    for (const auto &entry : subsystem_entries())
+      entry.declare_switches(prm);
+    load_functions.declare_parameters(prm);
+    solver.declare_parameters(prm);
+    for (const auto &s : subsystems)
+      s->declare_parameters(prm, layout);
+  }
+
+  void
+  Model::parse_parameters(ParameterHandler &prm)
+  {
+    load_functions.parse_parameters(prm);
+    solver.parse_parameters(prm);
+    for (const auto &s : subsystems)
+      s->parse_parameters(prm);
+    for (const auto &s : subsystems)
+      s->check_parameters(*this);
+  }
+
+  // ------------------------------------------------------------------
+  // Setup
+  // ------------------------------------------------------------------
+  UnknownRange
+  Model::range(const Subsystem &s) const
+  {
+    for (unsigned int k = 0; k < subsystems.size(); ++k)
+      if (subsystems[k].get() == &s)
+        return ranges[k];
+    Assert(false, ExcInternalError());
+    return {};
+  }
+
+  unsigned int
+  Model::border_offset(const Subsystem &s) const
+  {
+    for (unsigned int k = 0; k < subsystems.size(); ++k)
+      if (subsystems[k].get() == &s)
+        return border_offsets[k];
+    Assert(false, ExcInternalError());
+    return 0;
+  }
+
+  void
+  Model::setup()
+  {
+    // Field unknowns in subsystem order, then the border.
+    types::global_dof_index first    = 0;
+    unsigned int            n_border = 0;
+    ranges.clear();
+    border_offsets.clear();
+    for (const auto &s : subsystems)
+      {
+        const auto n = s->setup_unknowns(first, comm);
+        ranges.push_back({first, n});
+        first += n;
+        border_offsets.push_back(n_border);
+        n_border += s->n_border_unknowns();
+      }
+    owned = IndexSet(first);
+    for (const auto &s : subsystems)
+      s->add_locally_owned(owned);
+    relevant = IndexSet(first);
+    relevant.add_indices(owned);
+    for (const auto &s : subsystems)
+      s->add_locally_relevant(relevant);
+    owned.compress();
+    relevant.compress();
+
+    make_constraints();
+    external.reinit(owned, comm);
+    ghosted.reinit(owned, relevant, comm);
+    coupling.reinit(n_border, external);
+    for (const auto &s : subsystems)
+      s->finish_setup();
+    rebuild_matrices();
+
+    // AMG near-null space: translations (and rotations where a subsystem
+    // has them) over the owned dofs.
+    std::vector<std::vector<double>> modes(
+      6, std::vector<double>(owned.n_elements(), 0.));
+    for (const auto &s : subsystems)
+      s->add_near_null_space(owned, modes);
+    std::vector<std::vector<bool>> translations(
+      3, std::vector<bool>(owned.n_elements()));
+    double rotation_norm = 0.;
+    for (unsigned int k = 0; k < owned.n_elements(); ++k)
+      {
+        for (unsigned int c = 0; c < 3; ++c)
+          translations[c][k] = modes[c][k] != 0.;
+        for (unsigned int c = 3; c < 6; ++c)
+          rotation_norm += std::abs(modes[c][k]);
+      }
+    solver.set_constant_modes(translations);
+    if (solver.type() == "amg" && Utilities::MPI::sum(rotation_norm, comm) > 0.)
+      solver.set_rigid_body_modes(modes);
+    solver.reset();
+  }
+
+  unsigned int
+  Model::refinement_cycles() const
+  {
+    unsigned int n = 0;
+    for (const auto &s : subsystems)
+      n = std::max(n, s->refinement_cycles());
+    return n;
+  }
+
+  void
+  Model::refine(const solvers::BorderedVector &state)
+  {
+    ghost(state.field);
+    for (const auto &s : subsystems)
+      s->refine(ghosted);
+    setup();
+  }
+
+  void
+  Model::make_constraints()
+  {
+    // Kinematic constraints first (hanging nodes, rigid plates, ties),
+    // then the prescribed components of the Newton update.
+    kinematic.clear();
+    kinematic.reinit(relevant);
+    for (const auto &s : subsystems)
+      s->add_kinematic_constraints(kinematic);
+    kinematic.close();
+
+    update_constraints.clear();
+    update_constraints.reinit(relevant);
+    update_constraints.merge(kinematic);
+    for (const auto &s : subsystems)
+      s->add_update_constraints(update_constraints);
+    update_constraints.close();
+  }
+
+  void
+  Model::rebuild_matrices()
+  {
+    DynamicSparsityPattern dsp(relevant);
+    for (const auto &s : subsystems)
+      s->add_sparsity(dsp, update_constraints);
+    SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
+    solver.reset();
+    tangent.reinit(owned, owned, dsp, comm);
+    laplacian.reinit(owned, owned, dsp, comm);
+    for (const auto &s : subsystems)
+      s->add_regularisation(update_constraints, laplacian);
+  }
+
+  // ------------------------------------------------------------------
+  // State
+  // ------------------------------------------------------------------
+  LA::Vector
+  Model::make_field() const
+  {
+    return LA::Vector(owned, comm);
+  }
+
+  const LA::Vector &
+  Model::ghost(const LA::Vector &field)
+  {
+    ghosted = field;
+    return ghosted;
+  }
+
+  void
+  Model::apply_kinematic_constraints(LA::Vector &field)
+  {
+    // Dependent dofs follow their masters after prescribed values changed.
+    if (kinematic.n_constraints() == 0)
+      return;
+    ghost(field);
+    for (const auto i : owned)
+      if (kinematic.is_constrained(i))
+        {
+          double v = kinematic.get_inhomogeneity(i);
+          for (const auto &e : *kinematic.get_constraint_entries(i))
+            v += e.second * ghosted[e.first];
+          field[i] = v;
+        }
+    field.compress(VectorOperation::insert);
+  }
+
+  solvers::BorderedVector
+  Model::initial_state()
+  {
+    current_time = 0.;
+    solvers::BorderedVector state;
+    state.field = make_field();
+    for (const auto &s : subsystems)
+      s->set_prescribed_values(0., state.field);
+    ghost(state.field);
+    for (const auto &s : subsystems)
+      s->initialize(ghosted, 0.);
+    state.border.reinit(n_border());
+    return state;
+  }
+
+  std::string
+  Model::begin_step(const double t, solvers::BorderedVector &state)
+  {
+    current_time = t;
+    for (const auto &s : subsystems)
+      s->set_prescribed_values(t, state.field);
+    apply_kinematic_constraints(state.field);
+    ghost(state.field);
+    bool grown = false;
+    for (const auto &s : subsystems)
+      {
+        const std::string error = s->begin_step(t, ghosted, grown);
+        if (!error.empty())
+          return error;
+      }
+    if (grown)
+      rebuild_matrices();
+    state.border.reinit(n_border());
+    for (unsigned int k = 0; k < subsystems.size(); ++k)
+      {
+        const Vector<double> b = subsystems[k]->border();
+        for (unsigned int j = 0; j < b.size(); ++j)
+          state.border[border_offsets[k] + j] = b[j];
+      }
+    return "";
+  }
+
+  std::string
+  Model::check_state(const solvers::BorderedVector &state)
+  {
+    ghost(state.field);
+    for (const auto &s : subsystems)
+      {
+        const std::string reason = s->check_state(ghosted);
+        if (!reason.empty())
+          return reason;
+      }
+    return "";
+  }
+
+  void
+  Model::commit_step(const double t, const solvers::BorderedVector &state)
+  {
+    ghost(state.field);
+    for (unsigned int k = 0; k < subsystems.size(); ++k)
+      {
+        const unsigned int n = subsystems[k]->n_border_unknowns();
+        Vector<double>     b(n);
+        for (unsigned int j = 0; j < n; ++j)
+          b[j] = state.border[border_offsets[k] + j];
+        subsystems[k]->commit_step(t, ghosted, b);
+      }
+  }
+
+  void
+  Model::refresh(const solvers::BorderedVector &state)
+  {
+    ghost(state.field);
+    for (const auto &s : subsystems)
+      s->refresh(ghosted);
+  }
+
+  void
+  Model::add_statistics(Statistics                    &statistics,
+                        const solvers::BorderedVector &state)
+  {
+    ghost(state.field);
+    for (const auto &s : subsystems)
+      s->add_statistics(statistics, ghosted);
+  }
+
+  void
+  Model::write_output(const std::string             &directory,
+                      const unsigned int             step,
+                      const double                   t,
+                      const solvers::BorderedVector &state)
+  {
+    // Never write a non-finite state.
+    AssertThrow(std::isfinite(state.field.l2_norm()),
+                ExcMessage("refusing to write a non-finite solution"));
+    ghost(state.field);
+    for (const auto &s : subsystems)
+      s->add_output_fields(ghosted);
+    for (const auto &s : subsystems)
+      s->write_output_files(directory, step, t, ghosted);
+  }
+
+  // ------------------------------------------------------------------
+  // The nonlinear problem seen by Newton
+  // ------------------------------------------------------------------
+  void
+  Model::assemble(const solvers::BorderedVector &u,
+                  solvers::BorderedVector       &residual)
+  {
+    TimerOutput::Scope t(*timers, "assembly");
+    ghost(u.field);
+    tangent        = 0.;
+    residual.field = 0.;
+    external       = 0.;
+    residual.border.reinit(n_border());
+    Assembly a;
+    a.time            = current_time;
+    a.field           = &ghosted;
+    a.border          = &u.border;
+    a.constraints     = &update_constraints;
+    a.residual        = &residual.field;
+    a.tangent         = &tangent;
+    a.external        = &external;
+    a.border_residual = &residual.border;
+    a.coupling        = &coupling;
+    for (const auto &s : subsystems)
+      s->assemble(a);
+  }
+
+  void
+  Model::solve_linear(const double                   shift,
+                      const solvers::BorderedVector &rhs,
+                      solvers::BorderedVector       &du)
+  {
+    TimerOutput::Scope t(*timers, "linear solve");
+    if (shift > 0.)
+      tangent.add(shift, laplacian);
+    solver.factorize(tangent);
+    if (n_border() == 0)
+      {
+        solver.solve(tangent, du.field, rhs.field);
+        du.border.reinit(0);
+      }
+    else
+      coupling.solve(solver, tangent, rhs, du);
+    update_constraints.distribute(du.field);
+    ++linear_solves;
+  }
+
+  double
+  Model::initial_shift(const double factor)
+  {
+    // The first subsystem that proposes a shift sets it (the membrane
+    // when there is one: stiff cables must not slow its continuation).
+    for (const auto &s : subsystems)
+      {
+        const double shift =
+          s->initial_shift(factor, range(*s), tangent, laplacian, external,
+                           update_constraints);
+        if (shift > 0.)
+          return shift;
+      }
+    return 0.;
+  }
+
+  void
+  Model::laplacian_vmult(const solvers::BorderedVector &x,
+                         solvers::BorderedVector       &y)
+  {
+    laplacian.vmult(y.field, x.field);
+    // Rows of dependent and prescribed dofs carry only the diagonal that
+    // the condensation leaves; the residual has no such rows, and neither
+    // may its regularisation (else the regularised residual keeps a part
+    // that no update can remove).
+    update_constraints.set_zero(y.field);
+    y.border.reinit(x.border.size());
+  }
+
+  double
+  Model::load_norm()
+  {
+    // External loads, and each subsystem's force scale at the current
+    // state (Newton assembles before it asks): chamber loads, the largest
+    // cable force (a prestress-driven step without external load).
+    const double f   = external.l2_norm();
+    double       sum = f * f;
+    for (const auto &s : subsystems)
+      {
+        const double c = s->force_scale(ghosted);
+        sum += c * c;
+      }
+    return std::sqrt(sum);
+  }
+
+  std::vector<std::string>
+  Model::block_names() const
+  {
+    std::vector<std::string> names;
+    for (unsigned int k = 0; k < subsystems.size(); ++k)
+      if (ranges[k].size > 0 || subsystems[k]->n_border_unknowns() > 0)
+        names.push_back(subsystems[k]->name());
+    return names;
+  }
+
+  std::vector<double>
+  Model::block_norms(const solvers::BorderedVector &r) const
+  {
+    std::vector<double> squares;
+    std::vector<bool>   on_border;
+    for (unsigned int k = 0; k < subsystems.size(); ++k)
+      {
+        const unsigned int nb = subsystems[k]->n_border_unknowns();
+        if (ranges[k].size == 0 && nb == 0)
+          continue;
+        double sum = 0.;
+        if (ranges[k].size > 0)
+          {
+            const auto end = ranges[k].first + ranges[k].size;
+            for (const auto i : owned)
+              if (i >= ranges[k].first && i < end)
+                sum += r.field[i] * r.field[i];
+            on_border.push_back(false);
+          }
+        else
+          {
+            for (unsigned int j = 0; j < nb; ++j)
+              sum += std::pow(r.border[border_offsets[k] + j], 2);
+            on_border.push_back(true);
+          }
+        squares.push_back(sum);
+      }
+    // Field parts are summed over the ranks, border parts are replicated.
+    std::vector<double> field_part(squares.size(), 0.);
+    for (unsigned int b = 0; b < squares.size(); ++b)
+      if (!on_border[b])
+        field_part[b] = squares[b];
+    { auto in_ = field_part; Utilities::MPI::sum(ArrayView<const double>(in_), comm, ArrayView<double>(field_part)); }
+    for (unsigned int b = 0; b < squares.size(); ++b)
+      squares[b] = std::sqrt(on_border[b] ? squares[b] : field_part[b]);
+    return squares;
+  }
+
+  // ------------------------------------------------------------------
+  // Finite-difference check of the tangent
+  // ------------------------------------------------------------------
+  TangentCheck
+  Model::check_tangent(const double t, const double amplitude, const double h)
+  {
+    current_time = t;
+    // A smooth random state: random nodal values scaled by amplitude.
+    solvers::BorderedVector u;
+    u.field = make_field();
+    for (const auto i : owned)
+      u.field[i] =
+        amplitude * (2. * std::sin(1.7 * i + 0.3) * std::cos(0.37 * i));
+    u.field.compress(VectorOperation::insert);
+    // An admissible state: prescribed values zero, dependent dofs (rigid
+    // plates, junction copies) following their masters.
+    update_constraints.set_zero(u.field);
+    update_constraints.distribute(u.field);
+
+    // The direction d acts on the independent dofs: K d with the condensed
+    // tangent, and the residual is perturbed along d with its dependent
+    // dofs distributed (C d).
+    solvers::BorderedVector direction(u);
+    for (const auto i : owned)
+      direction.field[i] = std::cos(0.91 * i + 0.1);
+    direction.field.compress(VectorOperation::insert);
+    update_constraints.set_zero(direction.field);
+
+    if (n_border() > 0)
+      {
+        // The border unknowns of the reference state at t, then predicted
+        // at u, and taken off equilibrium.
+        LA::Vector zero = make_field();
+        ghost(zero);
+        bool grown = false;
+        for (const auto &s : subsystems)
+          if (s->n_border_unknowns() > 0)
+            s->initialize(ghosted, t);
+        ghost(u.field);
+        u.border.reinit(n_border());
+        for (unsigned int k = 0; k < subsystems.size(); ++k)
+          if (subsystems[k]->n_border_unknowns() > 0)
+            {
+              subsystems[k]->begin_step(t, ghosted, grown);
+              const Vector<double> b = subsystems[k]->border();
+              for (unsigned int j = 0; j < b.size(); ++j)
+                u.border[border_offsets[k] + j] = b[j];
+            }
+        direction.border.reinit(u.border.size());
+        for (unsigned int j = 0; j < u.border.size(); ++j)
+          {
+            u.border[j] *= 1.01;
+            direction.border[j] = 0.3 + 0.1 * j;
+          }
+      }
+
+    solvers::BorderedVector r(u), r_plus(u), r_minus(u), Kd(u), fd(u);
+    assemble(u, r);
+    if (n_border() == 0)
+      tangent.vmult(Kd.field, direction.field);
+    else
+      coupling.vmult(tangent, direction, Kd);
+
+    solvers::BorderedVector full(direction);
+    update_constraints.distribute(full.field);
+    solvers::BorderedVector up(u);
+    up.add(h, full);
+    assemble(up, r_plus);
+    solvers::BorderedVector um(u);
+    um.add(-h, full);
+    assemble(um, r_minus);
+    fd = r_plus;
+    fd -= r_minus;
+    fd *= 1. / (2. * h);
+    TangentCheck check;
+    check.tangent_norm = Kd.l2_norm();
+    fd -= Kd;
+    check.relative_error = fd.l2_norm() / std::max(check.tangent_norm, 1e-300);
+    return check;
+  }
+} // namespace pneuma

@@ -1,0 +1,305 @@
+#include <deal.II/base/mpi.h>
+
+#include <pneuma/core/input_error.h>
+#include <pneuma/core/output.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iomanip>
+#include <map>
+#include <sstream>
+
+namespace pneuma
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// A number as JSON (non-finite values become null).
+    std::string
+    json_number(const double v, const bool integer)
+    {
+      if (!std::isfinite(v))
+        return "null";
+      std::ostringstream s;
+      if (integer)
+        s << static_cast<long long>(std::llround(v));
+      else
+        s << std::setprecision(10) << v;
+      return s.str();
+    }
+
+    std::string
+    json_value(const Statistics::Entry &e)
+    {
+      if (e.values.size() == 1)
+        return json_number(e.values[0], e.integer);
+      std::string s = "[";
+      for (unsigned int c = 0; c < e.values.size(); ++c)
+        s += (c ? ", " : "") + json_number(e.values[c], e.integer);
+      return s + "]";
+    }
+
+    std::string
+    json_string(const std::string &text)
+    {
+      std::string s = "\"";
+      for (const char c : text)
+        {
+          if (c == '"' || c == '\\')
+            s += '\\';
+          if (c == '\n')
+            {
+              s += "\\n";
+              continue;
+            }
+          s += c;
+        }
+      return s + "\"";
+    }
+  } // namespace
+
+  void
+  OutputWriter::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    prm.add_parameter("Directory",
+                      output_directory,
+                      "Where solution.pvd, history.csv, summary.json and "
+                      "parameters.prm are written (created if missing).",
+                      Patterns::Anything());
+    prm.add_parameter("Write VTU",
+                      vtu,
+                      "Write solution-NNNN.pvtu/.vtu and solution.pvd.");
+    prm.add_parameter("VTU interval",
+                      interval,
+                      "Write VTU every this many converged steps (0: only "
+                      "the initial and final states).",
+                      Patterns::Integer(0));
+    prm.add_parameter("Quiet",
+                      be_quiet,
+                      "Print nothing while running (tests, scripted "
+                      "studies).");
+    prm.add_parameter("Test output",
+                      test,
+                      "Also write a file 'output' in the working directory "
+                      "with physics-level numbers at fixed precision (used "
+                      "by the regression tests).");
+    prm.leave_subsection();
+  }
+
+  void
+  OutputWriter::parse_parameters(ParameterHandler &)
+  {
+    check_input(!output_directory.empty(),
+                "Output/Directory",
+                "must not be empty");
+  }
+
+  void
+  OutputWriter::prepare(const MPI_Comm comm)
+  {
+    root = Utilities::MPI::this_mpi_process(comm) == 0;
+    bool ok = true;
+    if (root)
+      {
+        std::error_code ec;
+        std::filesystem::create_directories(output_directory, ec);
+        history = std::make_unique<std::ofstream>(output_directory +
+                                                  "/history.csv");
+        ok      = static_cast<bool>(*history);
+      }
+    ok = Utilities::MPI::broadcast(comm, ok, 0);
+    check_input(ok,
+                "Output/Directory",
+                "cannot write into '" + output_directory + "'");
+    history_columns = 0;
+  }
+
+  void
+  OutputWriter::history_row(const Statistics &row)
+  {
+    if (!history)
+      return;
+    std::vector<const Statistics::Entry *> columns;
+    for (const auto &e : row.entries())
+      if (e.uses & Statistics::history)
+        columns.push_back(&e);
+    if (history_columns == 0)
+      {
+        bool first = true;
+        for (const auto *e : columns)
+          for (unsigned int c = 0; c < e->values.size(); ++c)
+            {
+              *history << (first ? "" : ",") << e->header(c);
+              first = false;
+            }
+        *history << "\n";
+        history_columns = columns.size();
+      }
+    AssertThrow(columns.size() == history_columns,
+                ExcMessage("history.csv: the columns changed during the run"));
+    bool first = true;
+    for (const auto *e : columns)
+      for (const double v : e->values)
+        {
+          *history << (first ? "" : ",");
+          first = false;
+          if (e->integer)
+            *history << static_cast<long long>(std::llround(v));
+          else
+            *history << std::setprecision(e->name == "wall_seconds" ? 4 : 10)
+                     << v;
+        }
+    *history << std::endl;
+  }
+
+  void
+  OutputWriter::summary(const Statistics  &row,
+                        const std::string &message,
+                        const TimerOutput &timer) const
+  {
+    if (!root)
+      return;
+    std::ofstream json(output_directory + "/summary.json");
+    json << "{";
+    bool first = true;
+    const auto key = [&](const std::string &k) -> std::ostream & {
+      json << (first ? "\n  " : ",\n  ") << json_string(k) << ": ";
+      first = false;
+      return json;
+    };
+    // Top-level values, then one array per group, in the order added.
+    std::vector<std::string> arrays;
+    for (const auto &e : row.entries())
+      {
+        if (!(e.uses & Statistics::summary))
+          continue;
+        if (e.group.array.empty())
+          {
+            key(e.name) << json_value(e);
+            if (e.name == "exit_code")
+              key("message") << json_string(message);
+          }
+        else if (std::find(arrays.begin(), arrays.end(), e.group.array) ==
+                 arrays.end())
+          arrays.push_back(e.group.array);
+      }
+    for (const auto &array : arrays)
+      {
+        std::map<unsigned int, std::vector<const Statistics::Entry *>> items;
+        std::string                                                   index_key;
+        for (const auto &e : row.entries())
+          if ((e.uses & Statistics::summary) && e.group.array == array)
+            {
+              items[e.group.index].push_back(&e);
+              index_key = e.group.index_key;
+            }
+        key(array) << "[";
+        bool first_item = true;
+        for (const auto &[index, entries] : items)
+          {
+            json << (first_item ? "\n    {" : ",\n    {")
+                 << json_string(index_key) << ": " << index;
+            first_item = false;
+            for (const auto *e : entries)
+              json << ", " << json_string(e->name) << ": " << json_value(*e);
+            json << "}";
+          }
+        json << (items.empty() ? "]" : "\n  ]");
+      }
+    // Units of every value that has one.
+    std::map<std::string, std::string> units;
+    for (const auto &e : row.entries())
+      if ((e.uses & Statistics::summary) && !e.unit.empty())
+        units[e.group.array.empty() ? e.name : e.group.array + "." + e.name] =
+          e.unit;
+    key("units") << "{";
+    bool first_unit = true;
+    for (const auto &[name, unit] : units)
+      {
+        json << (first_unit ? "" : ", ") << json_string(name) << ": "
+             << json_string(unit);
+        first_unit = false;
+      }
+    json << "}";
+    key("timings") << "{";
+    bool first_timer = true;
+    for (const auto &[name, seconds] :
+         timer.get_summary_data(TimerOutput::total_wall_time))
+      {
+        json << (first_timer ? "\n    " : ",\n    ") << json_string(name)
+             << ": " << json_number(seconds, false);
+        first_timer = false;
+      }
+    json << "\n  }\n}\n";
+  }
+
+  void
+  OutputWriter::test_output(const Statistics &row) const
+  {
+    if (!root || !test)
+      return;
+    // Round-off zeros: a component below 1e-9 of the largest value of the
+    // same quantity in its group family prints as 0 (no spurious digits of
+    // values that are zero up to round-off, e.g. on 1 and 2 ranks).
+    std::map<std::string, double> scale;
+    for (const auto &e : row.entries())
+      if (e.uses & Statistics::test)
+        for (const double v : e.values)
+          {
+            double &s = scale[e.group.array + "/" + e.name];
+            s         = std::max(s, std::abs(v));
+          }
+    const auto number = [&](const Statistics::Entry &e, const double v) {
+      char buffer[64];
+      if (e.integer)
+        std::snprintf(buffer, sizeof(buffer), "%lld", std::llround(v));
+      else
+        std::snprintf(buffer,
+                      sizeof(buffer),
+                      "%.4e",
+                      std::abs(v) < 1e-9 * scale[e.group.array + "/" + e.name] ?
+                        0. :
+                        v);
+      return std::string(buffer);
+    };
+    std::ofstream out("output");
+    // Run-level values one per line, then one line per group instance.
+    std::vector<std::pair<std::string, unsigned int>> instances;
+    for (const auto &e : row.entries())
+      {
+        if (!(e.uses & Statistics::test))
+          continue;
+        if (e.group.array.empty())
+          {
+            out << e.name;
+            for (const double v : e.values)
+              out << " " << number(e, v);
+            out << "\n";
+          }
+        else if (std::find(instances.begin(),
+                           instances.end(),
+                           std::make_pair(e.group.array, e.group.index)) ==
+                 instances.end())
+          instances.emplace_back(e.group.array, e.group.index);
+      }
+    for (const auto &[array, index] : instances)
+      {
+        bool first = true;
+        for (const auto &e : row.entries())
+          if ((e.uses & Statistics::test) && e.group.array == array &&
+              e.group.index == index)
+            {
+              if (first)
+                out << e.group.index_key << " " << index << ":";
+              out << (first ? " " : ", ") << e.name << " =";
+              for (const double v : e.values)
+                out << " " << number(e, v);
+              first = false;
+            }
+        out << "\n";
+      }
+  }
+} // namespace pneuma

@@ -1,0 +1,583 @@
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/mapping_q_cache.h>
+
+#include <pneuma/core/input_error.h>
+#include <pneuma/core/input_layout.h>
+#include <pneuma/core/model.h>
+#include <pneuma/core/share_constraints.h>
+#include <pneuma/membrane/membrane_subsystem.h>
+#include <pneuma/postprocess/membrane_fields.h>
+
+#include <fstream>
+#include <limits>
+
+namespace pneuma
+{
+  namespace membrane
+  {
+    MembraneSubsystem::MembraneSubsystem(Model &model)
+      : model(model)
+      , comm(model.mpi_communicator())
+      , mesh(comm, Triangulation<2, 3>::limit_level_difference_at_vertices)
+      , dofs(mesh)
+    {
+    }
+
+    MembraneSubsystem::~MembraneSubsystem()
+    {
+      output.reset();
+      dofs.clear();
+    }
+
+    void
+    MembraneSubsystem::declare_switches(ParameterHandler &prm)
+    {
+      geometry::SceneGenerator::declare_type(prm);
+    }
+
+    bool
+    MembraneSubsystem::is_active(const InputLayout &layout)
+    {
+      return layout.is_template() ||
+             layout.value("Geometry/Type", "closed cylinder") != "none";
+    }
+
+    void
+    MembraneSubsystem::declare_parameters(ParameterHandler &prm,
+                                          const InputLayout &)
+    {
+      prm.enter_subsection("Discretisation");
+      prm.add_parameter("Polynomial degree",
+                        fe_degree,
+                        "Degree of the FE_Q displacement; the mapping of the "
+                        "reference surface has the same degree.",
+                        Patterns::Integer(1, 2));
+      prm.leave_subsection();
+      geometry::SceneGenerator::declare_parameters(prm);
+      geometry::AdaptiveRefinement::declare_parameters(prm);
+      MaterialRegions::declare_parameters(prm);
+      loads::BoundaryConditions::declare_parameters(prm);
+      loads::RigidRegions::declare_parameters(prm);
+      prm.enter_subsection("Output");
+      prm.declare_entry("Monitor points",
+                        "",
+                        Patterns::Anything(),
+                        "Points 'x,y,z; x,y,z; ...' [m]: the displacement of "
+                        "the nearest mesh vertex is written to history.csv "
+                        "and summary.json (columns m0_u_x, ...).");
+      prm.leave_subsection();
+    }
+
+    void
+    MembraneSubsystem::parse_parameters(ParameterHandler &prm)
+    {
+      scene.parse_parameters(prm);
+      adaptive.parse_parameters(prm);
+      materials.parse_parameters(prm);
+      boundary_conditions.parse_parameters(prm);
+      rigid_regions.parse_parameters(prm);
+      prm.enter_subsection("Output");
+      monitor_points.clear();
+      for (const auto &item :
+           Utilities::split_string_list(prm.get("Monitor points"), ';'))
+        monitor_points.push_back(
+          loads::parse_point(item, "Output/Monitor points"));
+      prm.leave_subsection();
+    }
+
+    // ------------------------------------------------------------------
+    // Setup
+    // ------------------------------------------------------------------
+    void
+    MembraneSubsystem::cache_mapping()
+    {
+      // The mapped support points of every cell are computed once from the
+      // manifolds: FEValues::reinit no longer calls the manifolds.
+      auto cache = std::make_unique<MappingQCache<2, 3>>(fe_degree);
+      cache->initialize(MappingQ<2, 3>(fe_degree), mesh);
+      mapping_cache = std::move(cache);
+    }
+
+    types::global_dof_index
+    MembraneSubsystem::setup_unknowns(const types::global_dof_index first,
+                                      const MPI_Comm)
+    {
+      AssertThrow(first == 0,
+                  ExcMessage("the membrane's dofs must come first"));
+      if (!mesh_created)
+        {
+          scene.create_triangulation(mesh);
+          fe = std::make_unique<FESystem<2, 3>>(FE_Q<2, 3>(fe_degree), 3);
+          cache_mapping();
+          mesh_created = true;
+
+          // Every region a cell is in must have a valid material; every id
+          // named in the input must exist in the mesh.
+          std::set<unsigned int> local_ids;
+          for (const auto &cell : mesh.active_cell_iterators())
+            if (cell->is_locally_owned())
+              local_ids.insert(cell->material_id());
+          const auto all_ids = Utilities::MPI::compute_set_union(
+            std::vector<unsigned int>(local_ids.begin(), local_ids.end()),
+            comm);
+          for (const auto id : all_ids)
+            (void)materials[id];
+          for (const auto id : model.loads().pressure_regions())
+            check_input(std::find(all_ids.begin(), all_ids.end(), id) !=
+                          all_ids.end(),
+                        "Loads/Pressure regions",
+                        "the mesh has no cells in region " +
+                          std::to_string(id));
+        }
+      dofs.distribute_dofs(*fe);
+      owned_dofs    = dofs.locally_owned_dofs();
+      relevant_dofs = DoFTools::extract_locally_relevant_dofs(dofs);
+      return dofs.n_dofs();
+    }
+
+    void
+    MembraneSubsystem::add_locally_owned(IndexSet &owned) const
+    {
+      owned.add_indices(owned_dofs);
+    }
+
+    void
+    MembraneSubsystem::add_locally_relevant(IndexSet &relevant)
+    {
+      relevant.add_indices(relevant_dofs);
+      // Rigid plates couple every plate dof to three master nodes, which
+      // every rank must see.
+      if (!rigid_regions.empty())
+        relevant.add_indices(rigid_regions.master_dofs(*mapping_cache, dofs));
+      // Junction copies are tied to a master that every rank must see.
+      auto master_regions = rigid_regions.all_ids();
+      for (const auto id : boundary_conditions.prescribed_regions())
+        master_regions.insert(id);
+      IndexSet relevant_membrane(dofs.n_dofs());
+      relevant_membrane.add_indices(relevant_dofs);
+      junction_ties.find(*mapping_cache,
+                         dofs,
+                         master_regions,
+                         relevant_membrane);
+      for (const auto i : junction_ties.masters)
+        relevant.add_index(i);
+    }
+
+    IndexSet
+    MembraneSubsystem::shared_masters() const
+    {
+      // Masters that dependent dofs on any rank refer to: junction masters
+      // and the plates' master nodes (share_constraints.h).
+      IndexSet result(model.locally_relevant().size());
+      result.add_indices(junction_ties.masters);
+      for (const auto d : rigid_regions.plate_master_dofs())
+        result.add_index(d);
+      result.compress();
+      return result;
+    }
+
+    void
+    MembraneSubsystem::add_kinematic_constraints(
+      AffineConstraints<double> &c) const
+    {
+      DoFTools::make_hanging_node_constraints(dofs, c);
+      rigid_regions.add_constraints(*mapping_cache, dofs, c);
+      share_constraint_lines(c, shared_masters(), model.locally_owned(), comm);
+      junction_ties.add_constraints(c);
+    }
+
+    void
+    MembraneSubsystem::add_update_constraints(AffineConstraints<double> &c) const
+    {
+      boundary_conditions.add_update_constraints(dofs,
+                                                 rigid_regions.slave_dofs(),
+                                                 rigid_regions.plate_master_dofs(),
+                                                 junction_ties.copies(),
+                                                 c);
+      share_constraint_lines(c, shared_masters(), model.locally_owned(), comm);
+    }
+
+    void
+    MembraneSubsystem::finish_setup()
+    {
+      assembler = std::make_unique<MembraneAssembler>(scene,
+                                                      materials,
+                                                      model.loads());
+      assembler->reinit(*mapping_cache, dofs, fe_degree);
+      boundary_conditions.check_against_mesh(dofs);
+      // Junction copies are tied vertex by vertex: both sides of a junction
+      // would have to be refined alike.
+      check_input(adaptive.cycles() == 0 || junction_ties.ties.empty(),
+                  "Adaptive refinement/Cycles",
+                  "meshes with junction lines (more than two cells on a "
+                  "line) cannot be refined adaptively yet; refine the Gmsh "
+                  "mesh instead");
+    }
+
+    void
+    MembraneSubsystem::add_sparsity(
+      DynamicSparsityPattern          &dsp,
+      const AffineConstraints<double> &constraints) const
+    {
+      DoFTools::make_sparsity_pattern(dofs, dsp, constraints, false);
+    }
+
+    void
+    MembraneSubsystem::add_regularisation(
+      const AffineConstraints<double> &constraints,
+      LA::SparseMatrix                &L) const
+    {
+      assembler->surface_laplacian(constraints, L);
+    }
+
+    void
+    MembraneSubsystem::add_near_null_space(
+      const IndexSet                   &owned,
+      std::vector<std::vector<double>> &modes) const
+    {
+      // The three translations (one indicator per component), and the
+      // three rotations about the centroid of the reference surface,
+      // which only AMG needs (they cost a pass over the support points).
+      std::vector<IndexSet> component_dofs;
+      for (unsigned int c = 0; c < 3; ++c)
+        {
+          std::vector<bool> mask(3, false);
+          mask[c] = true;
+          component_dofs.push_back(
+            DoFTools::extract_dofs(dofs, ComponentMask(mask)));
+        }
+      for (unsigned int k = 0; k < owned.n_elements(); ++k)
+        {
+          const auto i = owned.nth_index_in_set(k);
+          if (i < dofs.n_dofs())
+            for (unsigned int c = 0; c < 3; ++c)
+              modes[c][k] = component_dofs[c].is_element(i) ? 1. : 0.;
+        }
+      if (model.linear_solver().type() != "amg")
+        return;
+      std::map<types::global_dof_index, Point<3>> support;
+      DoFTools::map_dofs_to_support_points(*mapping_cache, dofs, support);
+      Point<3> centre;
+      double   count = 0.;
+      for (const auto &[i, x] : support)
+        if (owned_dofs.is_element(i))
+          {
+            centre += x;
+            count += 1.;
+          }
+      for (unsigned int d = 0; d < 3; ++d)
+        centre[d] = Utilities::MPI::sum(centre[d], comm);
+      centre /= std::max(1., Utilities::MPI::sum(count, comm));
+      // The rotation about axis a moves a dof of component c by
+      // (e_a x r)_c.
+      for (unsigned int k = 0; k < owned.n_elements(); ++k)
+        {
+          const auto i = owned.nth_index_in_set(k);
+          if (i >= dofs.n_dofs())
+            continue;
+          for (unsigned int c = 0; c < 3; ++c)
+            if (modes[c][k] != 0.)
+              {
+                const Tensor<1, 3> r = support.at(i) - centre;
+                for (unsigned int a = 0; a < 3; ++a)
+                  {
+                    Tensor<1, 3> e;
+                    e[a]            = 1.;
+                    modes[3 + a][k] = cross_product_3d(e, r)[c];
+                  }
+              }
+        }
+    }
+
+    double
+    MembraneSubsystem::initial_shift(
+      const double                     factor,
+      const UnknownRange              &range,
+      const LA::SparseMatrix          &K,
+      const LA::SparseMatrix          &L,
+      const LA::Vector                &,
+      const AffineConstraints<double> &constraints) const
+    {
+      // mean(diag K)/mean(diag L) over the unconstrained membrane dofs:
+      // the membrane sets the scale (stiff cables must not slow its
+      // continuation down).
+      double k_sum = 0., m_sum = 0.;
+      for (const auto i : model.locally_owned())
+        if (i >= range.first && i < range.first + range.size &&
+            !constraints.is_constrained(i))
+          {
+            k_sum += std::abs(K.diag_element(i));
+            m_sum += L.diag_element(i);
+          }
+      k_sum = Utilities::MPI::sum(k_sum, comm);
+      m_sum = Utilities::MPI::sum(m_sum, comm);
+      return m_sum > 0. ? factor * k_sum / m_sum : 0.;
+    }
+
+    void
+    MembraneSubsystem::refine(const LA::Vector &field)
+    {
+      adaptive.refine(*mapping_cache, dofs, field, mesh);
+      cache_mapping();
+    }
+
+    // ------------------------------------------------------------------
+    // Steps
+    // ------------------------------------------------------------------
+    void
+    MembraneSubsystem::set_prescribed_values(const double t,
+                                             LA::Vector  &field) const
+    {
+      boundary_conditions.set_prescribed_values(*mapping_cache, dofs, t, field);
+    }
+
+    void
+    MembraneSubsystem::initialize(const LA::Vector &field, const double)
+    {
+      locate_monitor_points();
+      reference_volume =
+        scene.is_closed() ? assembler->enclosed_volume(field) : 0.;
+    }
+
+    void
+    MembraneSubsystem::add_cell_terms(CellTerms &terms)
+    {
+      cell_terms.push_back(&terms);
+    }
+
+    void
+    MembraneSubsystem::assemble(const Assembly &a)
+    {
+      AssemblyRequest request;
+      request.time     = a.time;
+      request.residual = a.residual;
+      request.tangent  = a.tangent;
+      request.external = a.external;
+      for (auto *terms : cell_terms)
+        terms->begin(a);
+      if (!cell_terms.empty())
+        request.cell_terms = [this](const auto &cell,
+                                    const auto &fe_values,
+                                    const auto &local_u,
+                                    auto       *cell_matrix,
+                                    auto       *cell_residual,
+                                    const auto &dof_indices) {
+          for (auto *terms : cell_terms)
+            terms->cell(cell,
+                        fe_values,
+                        local_u,
+                        cell_matrix,
+                        cell_residual,
+                        dof_indices);
+        };
+      assembler->assemble(*a.field, *a.constraints, request);
+      for (auto *terms : cell_terms)
+        terms->end();
+    }
+
+    std::string
+    MembraneSubsystem::check_state(const LA::Vector &field) const
+    {
+      // A closed surface must keep a positive enclosed volume.
+      if (scene.is_closed() && assembler->enclosed_volume(field) <= 0.)
+        return "the surface turned inside out";
+      return "";
+    }
+
+    // ------------------------------------------------------------------
+    // Reports
+    // ------------------------------------------------------------------
+    void
+    MembraneSubsystem::locate_monitor_points()
+    {
+      monitor_dofs.clear();
+      monitor_positions.clear();
+      for (const auto &p : monitor_points)
+        {
+          double local_min = std::numeric_limits<double>::max();
+          for (const auto &cell : dofs.active_cell_iterators())
+            if (cell->is_locally_owned())
+              for (const auto v : cell->vertex_indices())
+                local_min = std::min(local_min, cell->vertex(v).distance(p));
+          const double global_min = Utilities::MPI::min(local_min, comm);
+          // The lowest rank that owns a vertex at that distance reports it.
+          std::array<types::global_dof_index, 3> dof;
+          dof.fill(numbers::invalid_dof_index);
+          std::array<double, 3> position{{0., 0., 0.}};
+          bool                  found = false;
+          for (const auto &cell : dofs.active_cell_iterators())
+            if (cell->is_locally_owned() && !found)
+              for (const auto v : cell->vertex_indices())
+                if (cell->vertex(v).distance(p) <= global_min * (1 + 1e-12) &&
+                    owned_dofs.is_element(cell->vertex_dof_index(v, 0)))
+                  {
+                    for (unsigned int c = 0; c < 3; ++c)
+                      {
+                        dof[c]      = cell->vertex_dof_index(v, c);
+                        position[c] = cell->vertex(v)[c];
+                      }
+                    found = true;
+                    break;
+                  }
+          const unsigned int me = Utilities::MPI::this_mpi_process(comm);
+          const unsigned int reporter =
+            Utilities::MPI::min(found ? me : numbers::invalid_unsigned_int,
+                                comm);
+          if (me != reporter)
+            {
+              dof.fill(numbers::invalid_dof_index);
+              position.fill(0.);
+            }
+          for (unsigned int c = 0; c < 3; ++c)
+            position[c] = Utilities::MPI::sum(position[c], comm);
+          monitor_dofs.push_back(dof);
+          monitor_positions.push_back(position);
+        }
+    }
+
+    void
+    MembraneSubsystem::compute_reactions(const LA::Vector      &u,
+                                         std::array<double, 3> &reaction,
+                                         std::array<double, 3> &applied) const
+    {
+      // Residual with hanging-node and rigid-plate forces condensed onto
+      // the independent dofs: at a prescribed dof, f_int - f_ext is the
+      // force the support exerts on the structure (the reaction). The
+      // loads of the cell terms (chambers) count as applied loads.
+      LA::Vector residual = model.make_field(), ext = model.make_field();
+      AssemblyRequest request;
+      request.time     = model.current_time;
+      request.residual = &residual;
+      request.external = &ext;
+      assembler->assemble(u, model.kinematic_constraints(), request);
+      for (const auto *terms : cell_terms)
+        terms->add_loads(u, model.kinematic_constraints(), residual, ext);
+      reaction.fill(0.);
+      applied.fill(0.);
+      const auto &constraints = model.constraints();
+      for (unsigned int c = 0; c < 3; ++c)
+        {
+          std::vector<bool> mask(3, false);
+          mask[c] = true;
+          const IndexSet component_dofs =
+            DoFTools::extract_dofs(dofs, ComponentMask(mask));
+          for (const auto i : component_dofs)
+            {
+              applied[c] += ext[i];
+              if (constraints.is_constrained(i) &&
+                  constraints.get_constraint_entries(i)->empty())
+                reaction[c] += residual[i];
+            }
+          reaction[c] = Utilities::MPI::sum(reaction[c], comm);
+          applied[c]  = Utilities::MPI::sum(applied[c], comm);
+        }
+    }
+
+    void
+    MembraneSubsystem::add_statistics(Statistics       &statistics,
+                                      const LA::Vector &field) const
+    {
+      const auto run = StatisticsGroup::run();
+      if (statistics.is_summary())
+        {
+          statistics.add_count(run,
+                               "cells",
+                               mesh.n_global_active_cells(),
+                               Statistics::summary | Statistics::test);
+          std::array<double, 3> reaction, applied;
+          compute_reactions(field, reaction, applied);
+          statistics.add_vector(run, "reaction", "N", reaction, Statistics::summary);
+          statistics.add_vector(run, "applied_load", "N", applied, Statistics::summary);
+        }
+      if (scene.is_closed())
+        {
+          statistics.add(run,
+                         "volume",
+                         "m^3",
+                         assembler->enclosed_volume(field),
+                         Statistics::all);
+          statistics.add(run,
+                         "initial_volume",
+                         "m^3",
+                         reference_volume,
+                         Statistics::summary);
+        }
+      for (unsigned int m = 0; m < monitor_dofs.size(); ++m)
+        {
+          std::array<double, 3> u{{0., 0., 0.}};
+          for (unsigned int c = 0; c < 3; ++c)
+            if (monitor_dofs[m][c] != numbers::invalid_dof_index)
+              u[c] = field[monitor_dofs[m][c]];
+          const StatisticsGroup group{"m", "monitor_points", "monitor", m};
+          statistics.add_vector(group,
+                                "position",
+                                "m",
+                                monitor_positions[m],
+                                Statistics::summary);
+          statistics.add_vector(
+            group, "u", "m", u, Statistics::all, Statistics::Reduction::sum);
+        }
+    }
+
+    // ------------------------------------------------------------------
+    // Output
+    // ------------------------------------------------------------------
+    void
+    MembraneSubsystem::add_output_fields(const LA::Vector &field)
+    {
+      output = std::make_unique<DataOut<2, 3>>();
+      output->attach_dof_handler(dofs);
+      const std::vector<std::string> names(3, "displacement");
+      const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+        interpretation(3,
+                       DataComponentInterpretation::component_is_part_of_vector);
+      output->add_data_vector(field,
+                              names,
+                              DataOut<2, 3>::type_dof_data,
+                              interpretation);
+      const postprocess::CellFields fields =
+        postprocess::membrane_cell_fields(*mapping_cache, dofs, materials, field);
+      output_cell_data.clear();
+      output_cell_data.reserve(fields.names.size() + 1);
+      for (unsigned int i = 0; i < fields.names.size(); ++i)
+        {
+          output_cell_data.emplace_back(fields.values[i]);
+          output->add_data_vector(output_cell_data.back(),
+                                  fields.names[i],
+                                  DataOut<2, 3>::type_cell_data);
+        }
+      output_cell_data.emplace_back(mesh.n_active_cells());
+      output_cell_data.back() = mesh.locally_owned_subdomain();
+      output->add_data_vector(output_cell_data.back(), "subdomain");
+    }
+
+    void
+    MembraneSubsystem::write_output_files(const std::string &directory,
+                                          const unsigned int step,
+                                          const double       t,
+                                          const LA::Vector  &)
+    {
+      output->build_patches(*mapping_cache,
+                            fe_degree,
+                            DataOut<2, 3>::curved_inner_cells);
+      const std::string pvtu = output->write_vtu_with_pvtu_record(
+        directory + "/", "solution", step, comm, 4);
+      if (step == 0)
+        pvd_records.clear();
+      pvd_records.emplace_back(t, pvtu);
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        {
+          std::ofstream pvd(directory + "/solution.pvd");
+          DataOutBase::write_pvd_record(pvd, pvd_records);
+        }
+      output.reset();
+    }
+  } // namespace membrane
+} // namespace pneuma
+
+PNEUMA_REGISTER_SUBSYSTEM(pneuma::membrane::MembraneSubsystem,
+                          "membrane",
+                          10,
+                          pneuma::membrane::MembraneSubsystem::declare_switches,
+                          pneuma::membrane::MembraneSubsystem::is_active)

@@ -1,0 +1,153 @@
+#include <pneuma/core/model.h>
+#include <pneuma/solvers/load_path.h>
+
+#include <iomanip>
+#include <sstream>
+
+namespace pneuma
+{
+  namespace solvers
+  {
+    namespace
+    {
+      /// Below this current stiffness parameter a failed step is reported
+      /// as a limit point (the tangent stiffness along the path has fallen
+      /// to a tenth of the stage's first step).
+      constexpr double limit_point_stiffness = 0.1;
+    } // namespace
+
+    void
+    StaticLoadPath::declare_parameters(ParameterHandler &prm)
+    {
+      stepping.declare_parameters(prm);
+      newton_solver.declare_parameters(prm);
+    }
+
+    void
+    StaticLoadPath::parse_parameters(ParameterHandler &prm)
+    {
+      stepping.parse_parameters(prm);
+      newton_solver.parse_parameters(prm);
+    }
+
+    PathResult
+    StaticLoadPath::run(Model                    &model,
+                        const ConditionalOStream &out,
+                        dealii::Timer            &wall_clock,
+                        const Observer           &observer)
+    {
+      PathResult result;
+      result.state = model.initial_state();
+      observer(PathStep{}, result.state);
+
+      double         t  = 0.;
+      double         dt = stepping.initial();
+      BorderedVector last(result.state);
+      // Bergan's current stiffness parameter, per stage.
+      double       stiffness_reference = 0., stiffness = 1.;
+      unsigned int stiffness_stage     = numbers::invalid_unsigned_int;
+
+      while (!stepping.finished(t))
+        {
+          // 1. Prepare the step from the last converged state.
+          const double t_old = t, t_new = stepping.next_time(t_old, dt);
+          last = result.state;
+          out << "Step " << result.steps + 1 << "  t = " << t_new
+              << "  dt = " << t_new - t_old << std::endl;
+          const std::string impossible =
+            model.begin_step(t_new, result.state);
+          if (!impossible.empty())
+            {
+              result.exit_code = 2;
+              result.message   = impossible +
+                               ". The last converged state (t = " +
+                               std::to_string(t_old) + ") is written.";
+              result.state       = last;
+              model.current_time = t_old;
+              break;
+            }
+
+          // 2. Solve, and check that the state is admissible.
+          auto newton =
+            newton_solver.solve(model,
+                                result.state,
+                                out,
+                                last.field.linfty_norm() == 0.);
+          result.newton_iterations += newton.iterations;
+          if (newton.converged)
+            {
+              const std::string reason = model.check_state(result.state);
+              if (!reason.empty())
+                {
+                  newton.converged      = false;
+                  newton.failure_reason = reason;
+                }
+            }
+
+          // 3. Reject: back to the last state with a smaller increment.
+          if (!newton.converged)
+            {
+              ++result.cutbacks;
+              result.state       = last;
+              model.current_time = t_old;
+              dt                 = stepping.cut(t_new - t_old);
+              out << "  Newton failed (" << newton.failure_reason
+                  << "); cutting back to dt = " << dt << std::endl;
+              if (dt < stepping.minimum())
+                {
+                  std::ostringstream msg;
+                  msg << "the load step could not be completed at t = "
+                      << t_old << " even with the minimum increment "
+                      << stepping.minimum() << " (" << newton.failure_reason
+                      << ")";
+                  if (stiffness < limit_point_stiffness)
+                    msg << "; a limit point was reached: the current "
+                           "stiffness parameter fell to "
+                        << stiffness
+                        << ", so the load cannot grow further under load "
+                           "control (use volume or gas-amount control)";
+                  msg << ". The last converged state (t = " << t_old
+                      << ") is written.";
+                  result.exit_code = 2;
+                  result.message   = msg.str();
+                  break;
+                }
+              continue;
+            }
+
+          // 4. Accept.
+          t = t_new;
+          ++result.steps;
+          model.commit_step(t_new, result.state);
+          result.step_iterations.push_back(newton.iterations);
+          result.last_residual_history = newton.residual_history;
+          LA::Vector increment(result.state.field);
+          increment -= last.field;
+          const double ratio =
+            (t_new - t_old) / std::max(increment.l2_norm(), 1e-300);
+          const unsigned int stage = stepping.stage_of(t_old);
+          if (stage != stiffness_stage)
+            {
+              stiffness_stage     = stage;
+              stiffness_reference = ratio;
+            }
+          stiffness = ratio / stiffness_reference;
+          out << "  converged in " << newton.iterations << " iterations ("
+              << newton.convergence_test << "), wall " << std::fixed
+              << std::setprecision(2) << wall_clock.wall_time() << " s"
+              << std::defaultfloat << std::setprecision(6) << std::endl;
+          observer(PathStep{result.steps,
+                            t_new,
+                            newton.iterations,
+                            newton.convergence_test,
+                            stiffness},
+                   result.state);
+          dt = stepping.grown(t_new - t_old, newton.iterations);
+        }
+      result.final_time = t;
+      // The reports of the last converged state.
+      model.refresh(result.state);
+      return result;
+    }
+  } // namespace solvers
+} // namespace pneuma
