@@ -1,11 +1,11 @@
 #!/bin/bash
 # Installs what pneuma needs on Debian 12 (deal.II 9.4 with Trilinos, p4est,
-# MPI and MUMPS; Eigen; numdiff for the tests; Gmsh for meshes; ccache;
+# MPI and MUMPS; numdiff for the tests; Gmsh for meshes; ccache;
 # matplotlib for the chamber plots; OpenBLAS, which makes the MUMPS factorizations 5x faster than the
 # reference BLAS Debian selects otherwise).
 # Does nothing when everything is already there.
 set -euo pipefail
-packages=(build-essential cmake ccache libdeal.ii-dev libeigen3-dev numdiff
+packages=(build-essential cmake ccache libdeal.ii-dev numdiff
           libopenblas0-pthread
           gmsh openmpi-bin time python3 python3-matplotlib)
 missing=()

@@ -1,9 +1,19 @@
 #!/bin/bash
 # Every bad input must stop before any work with exit code 1 and one
 # message that names the offending parameter or file; never a crash.
-# Usage: check_bad_input.sh PNEUMA_BINARY CASE_DIRECTORY
-pneuma="$1"
-dir="$2"
+# Usage: check_bad_input.sh PNEUMA_BINARY CASE_DIRECTORY [WORK_DIRECTORY]
+# The valid cases write run output (their Output/Directory is relative) into
+# WORK_DIRECTORY (ctest passes build/tests/bad_input), else into a temporary
+# directory removed at exit; never into the caller's directory, which may be
+# the source tree.
+case "$1" in */*) pneuma="$(realpath -- "$1")" ;; *) pneuma="$1" ;; esac
+dir="$(realpath -- "$2")"
+if [ -n "$3" ]; then
+  mkdir -p -- "$3" && cd -- "$3" || exit 1
+else
+  work="$(mktemp -d)" && cd -- "$work" || exit 1
+  trap 'rm -rf -- "$work"' EXIT
+fi
 fail=0
 check() { # case-file, expected exit code, text the message must contain
   local out code

@@ -3,8 +3,8 @@
 /**
  * @file
  * The section kernel of the source paper's solid-beam element (section 3.1
- * "Solid-beam finite element" of ../shared/reference/source-paper.txt,
- * after Konyukhov & Schweizerhof): the hyperelastic energy per unit
+ * "Solid-beam finite element", after Konyukhov & Schweizerhof; both cited in
+ * doc/references.md): the hyperelastic energy per unit
  * reference length of a beam with an elliptic cross-section, its exact
  * gradient and Hessian (consistent tangent) with respect to the 18
  * kinematic numbers of one mid-line point, and the section resultants.

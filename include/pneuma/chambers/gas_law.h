@@ -12,7 +12,7 @@
  * The paper's incremental update linearises it about the last converged
  * state: \f$p = p_{old}\,[1 - \kappa (V - V_{old})/V_{old}
  * + \kappa (V_n - V_{n,old})/V_{n,old}]\f$; it is first order in the step
- * (VERIFICATION.md, V4), offered for comparison with codes that use it.
+ * (doc/verification.md, V4), offered for comparison with codes that use it.
  */
 
 #include <string>
