@@ -2,6 +2,7 @@
 
 #include <pneuma/cables/cable_parameters.h>
 #include <pneuma/core/input_error.h>
+#include <pneuma/core/input_layout.h>
 #include <pneuma/loads/loads.h>
 
 #include <cmath>
@@ -70,19 +71,21 @@ namespace pneuma
       prm.enter_subsection("Cables");
       prm.declare_entry("Number of cables",
                         "0",
-                        Patterns::Integer(0, max_cables),
+                        Patterns::Integer(0),
                         "Cables 1..N below are used (0: no cables, and no "
                         "cable work at all).");
       prm.leave_subsection();
     }
 
     void
-    CableParameters::declare_parameters(ParameterHandler &prm)
+    CableParameters::declare_parameters(ParameterHandler &prm,
+                          const InputLayout &layout)
     {
       prm.enter_subsection("Cables");
-      for (unsigned int c = 1; c <= max_cables; ++c)
+      for (const auto &instance :
+           layout.numbered("Cables", "Cable", "Cables/Number of cables"))
         {
-          prm.enter_subsection("Cable " + std::to_string(c));
+          prm.enter_subsection(instance);
           prm.declare_entry(
             "Element",
             "cable",

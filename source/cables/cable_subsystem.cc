@@ -28,10 +28,10 @@ namespace pneuma
     }
 
     void
-    CableSubsystem::declare_parameters(ParameterHandler &prm,
-                                       const InputLayout &)
+    CableSubsystem::declare_parameters(ParameterHandler  &prm,
+                                       const InputLayout &layout)
     {
-      CableParameters::declare_parameters(prm);
+      CableParameters::declare_parameters(prm, layout);
     }
 
     void

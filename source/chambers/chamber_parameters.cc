@@ -2,6 +2,7 @@
 
 #include <pneuma/chambers/chamber_parameters.h>
 #include <pneuma/core/input_error.h>
+#include <pneuma/core/input_layout.h>
 #include <pneuma/loads/loads.h>
 
 namespace pneuma
@@ -14,13 +15,14 @@ namespace pneuma
       prm.enter_subsection("Chambers");
       prm.declare_entry("Number of chambers",
                         "0",
-                        Patterns::Integer(0, max_chambers),
+                        Patterns::Integer(0),
                         "Chambers 1..N below are used (0: no chambers).");
       prm.leave_subsection();
     }
 
     void
-    ChamberParameters::declare_parameters(ParameterHandler &prm)
+    ChamberParameters::declare_parameters(ParameterHandler &prm,
+                          const InputLayout &layout)
     {
       prm.enter_subsection("Chambers");
       prm.declare_entry("Ambient pressure",
@@ -34,9 +36,10 @@ namespace pneuma
                         "Gravitational acceleration acting on liquid "
                         "fillings [m/s^2]; the free-surface level is "
                         "measured against it.");
-      for (unsigned int c = 1; c <= max_chambers; ++c)
+      for (const auto &instance :
+           layout.numbered("Chambers", "Chamber", "Chambers/Number of chambers"))
         {
-          prm.enter_subsection("Chamber " + std::to_string(c));
+          prm.enter_subsection(instance);
           prm.declare_entry(
             "Regions",
             "",

@@ -45,9 +45,9 @@ namespace pneuma
 
     void
     ChamberSubsystem::declare_parameters(ParameterHandler &prm,
-                                         const InputLayout &)
+                                         const InputLayout &layout)
     {
-      ChamberParameters::declare_parameters(prm);
+      ChamberParameters::declare_parameters(prm, layout);
     }
 
     void

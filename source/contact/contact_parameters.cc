@@ -1,5 +1,6 @@
 #include <pneuma/contact/contact_parameters.h>
 #include <pneuma/core/input_error.h>
+#include <pneuma/core/input_layout.h>
 #include <pneuma/loads/loads.h>
 
 namespace pneuma
@@ -12,19 +13,21 @@ namespace pneuma
       prm.enter_subsection("Contact");
       prm.declare_entry("Number of pairs",
                         "0",
-                        Patterns::Integer(0, max_pairs),
+                        Patterns::Integer(0),
                         "Contact pairs 1..N below are used (0: no contact "
                         "and no search).");
       prm.leave_subsection();
     }
 
     void
-    ContactParameters::declare_parameters(ParameterHandler &prm)
+    ContactParameters::declare_parameters(ParameterHandler &prm,
+                          const InputLayout &layout)
     {
       prm.enter_subsection("Contact");
-      for (unsigned int k = 1; k <= max_pairs; ++k)
+      for (const auto &instance :
+           layout.numbered("Contact", "Pair", "Contact/Number of pairs"))
         {
-          prm.enter_subsection("Pair " + std::to_string(k));
+          prm.enter_subsection(instance);
           prm.declare_entry("Cable",
                             "1",
                             Patterns::Integer(1),

@@ -42,9 +42,9 @@ namespace pneuma
 
     void
     ContactSubsystem::declare_parameters(ParameterHandler &prm,
-                                         const InputLayout &)
+                                         const InputLayout &layout)
     {
-      ContactParameters::declare_parameters(prm);
+      ContactParameters::declare_parameters(prm, layout);
     }
 
     void

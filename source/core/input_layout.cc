@@ -279,8 +279,8 @@ namespace pneuma
               check_input(k >= 1 && k <= n,
                           parent + "/" + name,
                           "is not used: " + count_entry + " is " +
-                            std::to_string(n) + " (" + prefix +
-                            "s are numbered 1.." + std::to_string(n) +
+                            std::to_string(n) + " (numbered 1.." +
+                            std::to_string(n) +
                             "); raise the count or remove the subsection");
             }
       }

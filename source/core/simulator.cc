@@ -21,8 +21,8 @@ namespace pneuma
       : comm(comm)
       , layout(layout)
       , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
-      , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
       , model(comm, layout)
+      , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
     {
       check_input(!model.all().empty(),
                   "Geometry/Type",
@@ -43,9 +43,10 @@ namespace pneuma
     MPI_Comm                 comm;
     InputLayout              layout;
     ConditionalOStream       pcout;
+    /// Made first: an input error in it leaves no timer to finalize.
+    Model                    model;
     TimerOutput              timer;
     Timer                    wall_clock;
-    Model                    model;
     solvers::StaticLoadPath  path;
     OutputWriter             output;
     /// The last converged state of run_once().

@@ -44,8 +44,8 @@ namespace pneuma
     }
 
     void
-    MembraneSubsystem::declare_parameters(ParameterHandler &prm,
-                                          const InputLayout &)
+    MembraneSubsystem::declare_parameters(ParameterHandler  &prm,
+                                          const InputLayout &layout)
     {
       prm.enter_subsection("Discretisation");
       prm.add_parameter("Polynomial degree",
@@ -54,9 +54,9 @@ namespace pneuma
                         "reference surface has the same degree.",
                         Patterns::Integer(1, 2));
       prm.leave_subsection();
-      geometry::SceneGenerator::declare_parameters(prm);
+      scene.declare_parameters(prm);
       geometry::AdaptiveRefinement::declare_parameters(prm);
-      MaterialRegions::declare_parameters(prm);
+      materials.declare_parameters(prm, layout);
       loads::BoundaryConditions::declare_parameters(prm);
       loads::RigidRegions::declare_parameters(prm);
       prm.enter_subsection("Output");
@@ -123,6 +123,12 @@ namespace pneuma
             comm);
           for (const auto id : all_ids)
             (void)materials[id];
+          for (const auto id : materials.ids())
+            check_input(std::find(all_ids.begin(), all_ids.end(), id) !=
+                          all_ids.end(),
+                        "Materials/Region " + std::to_string(id),
+                        "no cell of the mesh has material id " +
+                          std::to_string(id));
           for (const auto id : model.loads().pressure_regions())
             check_input(std::find(all_ids.begin(), all_ids.end(), id) !=
                           all_ids.end(),

@@ -18,6 +18,8 @@
 
 namespace pneuma
 {
+  class InputLayout;
+
   namespace cables
   {
     using namespace dealii;
@@ -121,7 +123,7 @@ namespace pneuma
       static void
       declare_count(ParameterHandler &prm);
       static void
-      declare_parameters(ParameterHandler &prm);
+      declare_parameters(ParameterHandler &prm, const InputLayout &layout);
       void
       parse_parameters(ParameterHandler &prm);
 

@@ -28,6 +28,8 @@
 
 namespace pneuma
 {
+  class InputLayout;
+
   namespace chambers
   {
     using namespace dealii;
@@ -97,7 +99,7 @@ namespace pneuma
       static void
       declare_count(ParameterHandler &prm);
       static void
-      declare_parameters(ParameterHandler &prm);
+      declare_parameters(ParameterHandler &prm, const InputLayout &layout);
       void
       parse_parameters(ParameterHandler &prm);
 

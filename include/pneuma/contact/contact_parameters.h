@@ -16,6 +16,8 @@
 
 namespace pneuma
 {
+  class InputLayout;
+
   namespace contact
   {
     using namespace dealii;
@@ -56,7 +58,7 @@ namespace pneuma
       static void
       declare_count(ParameterHandler &prm);
       static void
-      declare_parameters(ParameterHandler &prm);
+      declare_parameters(ParameterHandler &prm, const InputLayout &layout);
       /// @p n_cables: cables declared, to check the pair's cable.
       void
       parse_parameters(ParameterHandler &prm, const unsigned int n_cables);

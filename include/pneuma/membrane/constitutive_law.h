@@ -3,7 +3,8 @@
 /**
  * @file
  * Hyperelastic plane-stress membrane laws written in a local orthonormal
- * basis of the reference tangent plane.
+ * basis of the reference tangent plane, and the material regions of the
+ * membrane (doc/theory.md "Membrane laws").
  *
  * The membrane strain is the surface Green-Lagrange tensor
  * \f$E = \tfrac12(C - I)\f$ with the 2x2 right Cauchy-Green tensor
@@ -13,20 +14,26 @@
  * reference volume and its consistent tangent \f$\mathbb{D} = \partial
  * S/\partial E\f$; the membrane force per unit reference length is \f$H S\f$.
  *
- * Plane stress is built in: for the incompressible laws the thickness
- * stretch is eliminated exactly, \f$\lambda_3^2 = 1/\det C\f$; for St.
- * Venant-Kirchhoff the reduced plane-stress modulus is used. Theory in
- * doc/theory.md, section "Membrane laws".
+ * A law is one .cc file in source/membrane/laws/ with one registration line
+ * (core/registry.h); its constants live in the subsection of its name,
+ * e.g. "Materials/Region 0/neo-Hookean/Shear modulus".
  */
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/types.h>
 
+#include <pneuma/core/registry.h>
+
+#include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace pneuma
 {
+  class InputLayout;
+
   namespace membrane
   {
     using dealii::SymmetricTensor;
@@ -36,6 +43,14 @@ namespace pneuma
     {
     public:
       virtual ~ConstitutiveLaw() = default;
+
+      /// Declare (and bind) the law's constants in the current subsection.
+      virtual void
+      declare_parameters(dealii::ParameterHandler &prm) = 0;
+      /// Check the constants; messages name @p path.
+      virtual void
+      parse_parameters(dealii::ParameterHandler &prm,
+                       const std::string        &path) = 0;
 
       /// Stress S and tangent dS/dE at the 2x2 right Cauchy-Green tensor C.
       virtual void
@@ -56,62 +71,10 @@ namespace pneuma
       initial_shear_modulus() const = 0;
     };
 
-    /**
-     * St. Venant-Kirchhoff in plane stress:
-     * \f$S = \bar\lambda\,\mathrm{tr}E\,I + 2\mu E\f$,
-     * \f$\bar\lambda = E\nu/(1-\nu^2)\f$, \f$\mu = E/(2(1+\nu))\f$.
-     */
-    class StVenantKirchhoff : public ConstitutiveLaw
-    {
-    public:
-      StVenantKirchhoff(const double youngs_modulus, const double poisson);
-      void
-      evaluate(const SymmetricTensor<2, 2> &C,
-               SymmetricTensor<2, 2>       &S,
-               SymmetricTensor<4, 2>       &dS_dE) const override;
-      double
-      strain_energy(const SymmetricTensor<2, 2> &C) const override;
-      double
-      thickness_stretch(const SymmetricTensor<2, 2> &C) const override;
-      double
-      initial_shear_modulus() const override;
+    /// The registry of membrane laws.
+    using LawRegistry = Registry<ConstitutiveLaw>;
 
-    private:
-      double lambda_bar, mu, nu;
-    };
-
-    /**
-     * Incompressible Mooney-Rivlin in plane stress,
-     * \f$W = C_{10}(I_1 - 3) + C_{01}(I_2 - 3)\f$ with
-     * \f$I_1 = \mathrm{tr}C + \lambda_3^2\f$,
-     * \f$I_2 = \det C + \lambda_3^2\,\mathrm{tr}C\f$,
-     * \f$\lambda_3^2 = 1/\det C\f$. With \f$C_{01} = 0\f$ and
-     * \f$C_{10} = \mu/2\f$ it is the incompressible neo-Hookean law
-     * \f$S = \mu(I - \lambda_3^2 C^{-1})\f$.
-     */
-    class IncompressibleMooneyRivlin : public ConstitutiveLaw
-    {
-    public:
-      IncompressibleMooneyRivlin(const double c10, const double c01);
-      void
-      evaluate(const SymmetricTensor<2, 2> &C,
-               SymmetricTensor<2, 2>       &S,
-               SymmetricTensor<4, 2>       &dS_dE) const override;
-      double
-      strain_energy(const SymmetricTensor<2, 2> &C) const override;
-      double
-      thickness_stretch(const SymmetricTensor<2, 2> &C) const override;
-      double
-      initial_shear_modulus() const override;
-
-    private:
-      double c10, c01;
-    };
-
-    /**
-     * The material of one region (material id) of the membrane mesh: its
-     * law, thickness and density, read from "Materials/Region N".
-     */
+    /// The material of one region (material id) of the membrane mesh.
     struct RegionMaterial
     {
       std::string                      law_name;
@@ -120,28 +83,42 @@ namespace pneuma
       std::shared_ptr<ConstitutiveLaw> law;
     };
 
-    /// The material regions of the membrane: "Materials/Region 0..N".
+    /**
+     * The material regions of the membrane: "Materials/Region <id>" for
+     * every material id the input names (any non-negative integer, e.g. the
+     * tags of Gmsh physical surfaces), each with its law and the law's
+     * constants.
+     */
     class MaterialRegions
     {
     public:
-      /// Number of region slots that can be set in a parameter file.
-      static constexpr unsigned int max_regions = 16;
-
-      static void
-      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      declare_parameters(dealii::ParameterHandler &prm,
+                         const InputLayout        &layout);
       void
       parse_parameters(dealii::ParameterHandler &prm);
 
-      /// Material of region (material id) @p id.
+      /// Material of region (material id) @p id; InputError if the input
+      /// has no "Materials/Region <id>".
       const RegionMaterial &
-      operator[](const unsigned int id) const;
+      operator[](const dealii::types::material_id id) const;
 
-      /// Names of all law choices, for the Patterns::Selection.
-      static std::string
-      law_names();
+      /// The ids of the regions the input declares.
+      std::vector<dealii::types::material_id>
+      ids() const;
 
     private:
-      std::vector<RegionMaterial> regions;
+      /// One declared region: bound values and every law's constants.
+      struct Slot
+      {
+        dealii::types::material_id id;
+        std::string                law       = "St. Venant-Kirchhoff";
+        double                     thickness = 1e-3;
+        double                     density   = 0.;
+        std::map<std::string, std::unique_ptr<ConstitutiveLaw>> laws;
+      };
+      std::vector<std::unique_ptr<Slot>>                     slots;
+      std::map<dealii::types::material_id, RegionMaterial> regions;
     };
   } // namespace membrane
 } // namespace pneuma
