@@ -185,9 +185,9 @@ namespace pneuma
                             "Mass density [kg/m^3]; gravity (Loads/Gravity) "
                             "acts on density * area per unstressed length.");
           prm.declare_entry("Law",
-                            "St. Venant-Kirchhoff",
+                            "Saint Venant-Kirchhoff",
                             Patterns::Selection(
-                              "St. Venant-Kirchhoff|neo-Hookean"),
+                              "Saint Venant-Kirchhoff|neo-Hookean"),
                             "Solid beam: 3D hyperelastic law (compressible "
                             "neo-Hookean).");
           prm.declare_entry("Prestress force",

@@ -112,7 +112,7 @@ namespace pneuma
       struct Slot
       {
         dealii::types::material_id id;
-        std::string                law       = "St. Venant-Kirchhoff";
+        std::string                law       = "Saint Venant-Kirchhoff";
         double                     thickness = 1e-3;
         double                     density   = 0.;
         std::map<std::string, std::unique_ptr<ConstitutiveLaw>> laws;

@@ -90,7 +90,7 @@ namespace pneuma
 
     PNEUMA_REGISTER_VARIANT(ConstitutiveLaw,
                             StVenantKirchhoff,
-                            "St. Venant-Kirchhoff",
+                            "Saint Venant-Kirchhoff",
                             "linear in the Green-Lagrange strain (fabrics, "
                             "foils, steel plates)")
   } // namespace membrane
