@@ -156,7 +156,7 @@ row = {"solver": "pneuma", "size": int(size), "wall_s": float(wall),
        "peak_MB": float(mb), "status": "ok"}
 try:
     s = json.load(open(path))
-    d = s["monitor_points"][0]["displacement"]
+    d = s["monitor_points"][0]["u"]
     row.update(cells=s["cells"], dofs=s["dofs"], dR_mm=1e3 * d[1],
                newton=s["newton_iterations"],
                note="N=%s, internal wall_seconds %.2f" % (level, s["wall_seconds"]))
