@@ -275,6 +275,13 @@ namespace pneuma
           if (pure && du_norm <= update_tolerance * u.l2_norm() &&
               r_norm <= floor_update * tolerance)
             {
+              if (print_table)
+                out << "    " << std::setw(4) << result.iterations
+                    << std::scientific << std::setprecision(3) << "  "
+                    << r_norm / r_ref << "  (|du|/|u| = "
+                    << du_norm / std::max(u.l2_norm(), 1e-300)
+                    << ": the update has vanished)" << std::defaultfloat
+                    << std::endl;
               result.convergence_test = "update at the round-off floor";
               return true;
             }
