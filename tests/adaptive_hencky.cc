@@ -1,4 +1,4 @@
-// Adaptive refinement on V1 (VERIFICATION.md): the clamped Hencky membrane
+// Adaptive refinement on V1 (doc/verification.md): the clamped Hencky membrane
 // at 10 kPa (w0 = 15.247 mm), Q1, from the 192-cell disc, three cycles of
 // Kelly refinement (30 % of the cells each). Checks:
 //  - every cycle converges and the mesh grows (hanging nodes, p4est);

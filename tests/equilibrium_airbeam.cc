@@ -1,7 +1,7 @@
 // Identity check on the main scene (parameter_files/airbeam.prm on a
 // coarser mesh): after inflation, gravity on tube and steel plates and the
 // transverse surface load, the support reactions balance the applied loads
-// (VERIFICATION.md, "Identities for every run"). Exercises rigid plates,
+// (doc/verification.md, "Identities for every run"). Exercises rigid plates,
 // point supports, gravity, surface traction, follower pressure and two load
 // stages. The vertical applied load must also equal the weight of tube and
 // plates plus the load F integrated over the band (within the quadrature

@@ -5,7 +5,7 @@
 // prescribed displacement, 0.1 m at its end). Both are sealed with their
 // initial air (adiabatic, kappa 1.4). Checks:
 //  - each chamber keeps its own p V^1.4 = p_a V_0^1.4 in every step
-//    (1e-8, the gas-law identity of VERIFICATION.md V4);
+//    (1e-8, the gas-law identity of doc/verification.md V4);
 //  - the divider carries p1 - p2: the same divider loaded by the prescribed
 //    pressure difference of the last step, without chambers, deflects the
 //    same (1e-6).

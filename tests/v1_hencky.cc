@@ -1,4 +1,4 @@
-// V1 (VERIFICATION.md): clamped circular membrane under follower pressure,
+// V1 (doc/verification.md): clamped circular membrane under follower pressure,
 // finite-strain St. Venant-Kirchhoff, started from the flat, unstressed
 // state. a = 0.1425 m, E h = 311488 N/m, nu = 0.34. Reference centre
 // deflection (exact solution of the finite-strain membrane equations):

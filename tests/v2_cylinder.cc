@@ -1,4 +1,4 @@
-// V2 (VERIFICATION.md): closed thin cylinder under internal pressure, the
+// V2 (doc/verification.md): closed thin cylinder under internal pressure, the
 // paper's geometry (R = 0.23 m, L = 2 m, t = 1 mm, E = 7.6e9 Pa, nu = 0.3)
 // with rigid steel end plates, measured at mid-length.
 //  (a) linear theory, checked at p = 1e4 Pa where finite-strain effects are

@@ -1,4 +1,4 @@
-// V3 (VERIFICATION.md): inflated sphere, incompressible neo-Hookean,
+// V3 (doc/verification.md): inflated sphere, incompressible neo-Hookean,
 // pressure control: p R/(mu H) = 2 (1/l - 1/l^7). The stretch l = r/R
 // reached at the pressures of l = 1.1, 1.2 and 1.3 must be within 0.5 %.
 // Asking for more than p_max = 1.239463 mu H/R must stop cleanly with exit

@@ -1,4 +1,4 @@
-// V3 (VERIFICATION.md) through the limit point: the incompressible
+// V3 (doc/verification.md) through the limit point: the incompressible
 // neo-Hookean sphere, p R/(mu H) = 2 (1/l - 1/l^7), inflated past
 // l = 7^(1/6) = 1.383 by a chamber
 //  - with prescribed volume V/V0 = l^3 (the pressure is the Lagrange

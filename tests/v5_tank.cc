@@ -1,4 +1,4 @@
-// V5 (VERIFICATION.md): a rigid vertical cylinder, radius a = 0.5 m, with a
+// V5 (doc/verification.md): a rigid vertical cylinder, radius a = 0.5 m, with a
 // clamped circular membrane bottom (E h = 1e6 N/m, nu = 0.3, St.
 // Venant-Kirchhoff), filled with 0.5 m^3 of water (rho g = 9810 N/m^3).
 // The free-surface level follows from the volume constraint. References:

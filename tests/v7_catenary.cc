@@ -1,4 +1,4 @@
-// V7 catenary (VERIFICATION.md): span S = 10, unstressed length L = 12,
+// V7 catenary (doc/verification.md): span S = 10, unstressed length L = 12,
 // weight w = 1 N/m. Inextensible (EA = 1e9 N): sag 2.923438, H 4.695415,
 // T_max 7.618853. Elastic, EA = 1e4 N: H 4.685299, sag 2.929124 (Irvine's
 // elastic catenary, Hooke's law on the engineering strain).

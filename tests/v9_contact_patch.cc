@@ -1,4 +1,4 @@
-// V9 contact patch tests (VERIFICATION.md): a straight, prestressed cable
+// V9 contact patch tests (doc/verification.md): a straight, prestressed cable
 // (R = 0.01 m, T = 100 N) lies on a flat membrane held fixed (the master)
 // under a uniform line load q = 100 N/m. Its ends are held only in the
 // plane, so the contact alone carries the load: the contact line load is
