@@ -35,7 +35,7 @@ main(int argc, char **argv)
              {"Output/Directory", "output-v1"},
              {"Output/Monitor points", "0,0,0"}});
           ok = ok && summary.exit_code == 0;
-          w.push_back(summary.monitor_displacements[0][2]);
+          w.push_back(summary.summary.get_vector("m0_u")[2]);
         }
       const double order =
         std::log(std::abs(w[0] - w[1]) / std::abs(w[1] - w[2])) / std::log(2.);
