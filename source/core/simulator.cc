@@ -21,13 +21,9 @@ namespace pneuma
       : comm(comm)
       , layout(layout)
       , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
-      , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
       , model(comm, layout)
+      , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
     {
-      check_input(!model.all().empty(),
-                  "Geometry/Type",
-                  "the scene has nothing to solve: no membrane (Type is "
-                  "none) and no cables (Cables/Number of cables)");
       model.set_timer(timer);
     }
 
@@ -43,9 +39,12 @@ namespace pneuma
     MPI_Comm                 comm;
     InputLayout              layout;
     ConditionalOStream       pcout;
+    /// The model (whose subsystems check the input layout) before the
+    /// timer: no TimerOutput is alive while a construction error
+    /// propagates.
+    Model                    model;
     TimerOutput              timer;
     Timer                    wall_clock;
-    Model                    model;
     solvers::StaticLoadPath  path;
     OutputWriter             output;
     /// The last converged state of run_once().
