@@ -1,7 +1,7 @@
 // Identity check on the main scene (parameter_files/airbeam.prm on a
 // coarser mesh): after inflation, gravity on tube and steel plates and the
 // transverse surface load, the support reactions balance the applied loads
-// (VERIFICATION.md, "Identities for every run"). Exercises rigid plates,
+// (doc/verification.md, "Identities for every run"). Exercises rigid plates,
 // point supports, gravity, surface traction, follower pressure and two load
 // stages. The vertical applied load must also equal the weight of tube and
 // plates plus the load F integrated over the band (within the quadrature
@@ -15,41 +15,40 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  dealii::ParameterHandler                 prm;
-  pneuma::read_parameters(prm,
-                          SOURCE_DIR "/../parameter_files/airbeam.prm",
-                          {"Geometry/Global refinements=3",
-                           "Output/Directory=output-airbeam",
-                           "Output/Quiet=true",
-                           "Output/Write VTU=false"});
-  pneuma::Simulator simulator(MPI_COMM_WORLD);
-  simulator.parse_parameters(prm);
-  simulator.setup();
-  const auto s = simulator.run();
+  const auto s = pneuma_test::make({{"Geometry/Global refinements", "3"},
+                                    {"Output/Directory", "output-airbeam"},
+                                    {"Output/Quiet", "true"},
+                                    {"Output/Write VTU", "false"}},
+                                   SOURCE_DIR "/../parameter_files/airbeam.prm")
+                   ->run();
+  const auto reaction     = s.summary.get_vector("reaction");
+  const auto applied_load = s.summary.get_vector("applied_load");
 
   const double R = 0.23, L = 2., g = 9.81;
   const double weight =
     (2. * M_PI * R * L * 1e-3 * 1. + 2. * M_PI * R * R * 1e-2 * 7850.) * g;
   bool ok = s.exit_code == 0;
-  std::printf("steps %u, final time %.1f\n", s.n_steps, s.final_time);
+  std::printf("steps %u, final time %.1f\n",
+              static_cast<unsigned int>(s.get("steps")),
+              s.get("final_time"));
   double imbalance = 0.;
   for (unsigned int c = 0; c < 3; ++c)
-    imbalance += std::pow(s.reaction[c] + s.applied_load[c], 2);
-  imbalance           = std::sqrt(imbalance) / std::abs(s.applied_load[2]);
+    imbalance += std::pow(reaction[c] + applied_load[c], 2);
+  imbalance           = std::sqrt(imbalance) / std::abs(applied_load[2]);
   const bool balanced = imbalance < 1e-6;
   if (!balanced)
     std::printf("reaction %g %g %g, applied %g %g %g\n",
-                s.reaction[0],
-                s.reaction[1],
-                s.reaction[2],
-                s.applied_load[0],
-                s.applied_load[1],
-                s.applied_load[2]);
+                reaction[0],
+                reaction[1],
+                reaction[2],
+                applied_load[0],
+                applied_load[1],
+                applied_load[2]);
   std::printf("|reactions + applied loads| / |applied vertical load| %s 1e-6\n",
               balanced ? "<" : ">=");
   ok = ok && balanced;
   ok = pneuma_test::check("vertical load (weight + F)",
-                          -s.applied_load[2],
+                          -applied_load[2],
                           weight + 1000.,
                           5e-2)
        && ok;

@@ -18,32 +18,26 @@ main(int argc, char **argv)
        {"St. Venant-Kirchhoff", "neo-Hookean", "Mooney-Rivlin"})
     for (const unsigned int degree : {1u, 2u})
       {
-        dealii::ParameterHandler prm;
-        pneuma::Simulator::declare_parameters(prm);
-        pneuma_test::apply(prm,
-                           {{"Geometry/Type", "sphere"},
-                            {"Geometry/Radius", "1"},
-                            {"Geometry/Global refinements", "1"},
-                            {"Discretisation/Polynomial degree",
-                             std::to_string(degree)},
-                            {"Materials/Region 0/Law", law},
-                            {"Materials/Region 0/Young's modulus", "1e6"},
-                            {"Materials/Region 0/Shear modulus", "1e6"},
-                            {"Materials/Region 0/C10", "3e5"},
-                            {"Materials/Region 0/C01", "2e5"},
-                            {"Loads/Pressure/Function expression", "800*t"},
-                            {"Output/Quiet", "true"}});
-        pneuma::Simulator simulator(MPI_COMM_WORLD);
-        simulator.parse_parameters(prm);
-        simulator.setup();
-        const auto check = simulator.check_tangent(1., 0.05, 1e-6);
-        const bool pass  = check.relative_error < 1e-6;
+        const auto simulator = pneuma_test::make(
+          {{"Geometry/Type", "sphere"},
+           {"Geometry/Radius", "1"},
+           {"Geometry/Global refinements", "1"},
+           {"Discretisation/Polynomial degree", std::to_string(degree)},
+           {"Materials/Region 0/Law", law},
+           {"Materials/Region 0/Young's modulus", "1e6"},
+           {"Materials/Region 0/Shear modulus", "1e6"},
+           {"Materials/Region 0/C10", "3e5"},
+           {"Materials/Region 0/C01", "2e5"},
+           {"Loads/Pressure/Function expression", "800*t"},
+           {"Output/Quiet", "true"}});
+        const double error = simulator->check_tangent(1., 0.05, 1e-6).first;
+        const bool   pass  = error < 1e-6;
         std::printf("tangent vs finite differences, %s, degree %u: %s\n",
                     law.c_str(),
                     degree,
                     pass ? "relative error < 1e-6" : "FAIL");
         if (!pass)
-          std::printf("  relative error %.3e\n", check.relative_error);
+          std::printf("  relative error %.3e\n", error);
         ok = ok && pass;
       }
 

@@ -5,7 +5,7 @@
 // prescribed displacement, 0.1 m at its end). Both are sealed with their
 // initial air (adiabatic, kappa 1.4). Checks:
 //  - each chamber keeps its own p V^1.4 = p_a V_0^1.4 in every step
-//    (1e-8, the gas-law identity of VERIFICATION.md V4);
+//    (1e-8, the gas-law identity of doc/verification.md V4);
 //  - the divider carries p1 - p2: the same divider loaded by the prescribed
 //    pressure difference of the last step, without chambers, deflects the
 //    same (1e-6).
@@ -61,13 +61,14 @@ main(int argc, char **argv)
 
   const double p_a = 101325.;
   double       worst[2] = {0., 0.};
-  for (const auto &[t, states] : two.chamber_history)
+  for (const auto &row : two.history)
     for (unsigned int c = 0; c < 2; ++c)
       {
-        const double V0 = two.chamber_history.front().second[c].volume;
+        const std::string chamber = "c" + std::to_string(c + 1) + "_";
+        const double V0 = two.history.front().get(chamber + "volume");
         worst[c] = std::max(worst[c],
-                            std::abs(states[c].absolute_pressure *
-                                       std::pow(states[c].volume, 1.4) /
+                            std::abs(row.get(chamber + "absolute_pressure") *
+                                       std::pow(row.get(chamber + "volume"), 1.4) /
                                        (p_a * std::pow(V0, 1.4)) -
                                      1.));
       }
@@ -78,14 +79,14 @@ main(int argc, char **argv)
                             1.,
                             1e-8) &&
          ok;
-  const auto  &end = two.chambers;
-  const double dp  = end[0].pressure - end[1].pressure;
+  const double p1 = two.get("c1_pressure"), p2 = two.get("c2_pressure");
+  const double dp = p1 - p2;
   std::printf("chamber 2 compressed to V/V0 = %.4f: p2 = %.1f Pa, p1 = %.1f "
               "Pa gauge\n",
-              end[1].volume / two.chamber_history.front().second[1].volume,
-              end[1].pressure,
-              end[0].pressure);
-  ok = ok && end[1].pressure > end[0].pressure && end[0].pressure > 0.;
+              two.get("c2_volume") / two.history.front().get("c2_volume"),
+              p2,
+              p1);
+  ok = ok && p2 > p1 && p1 > 0.;
 
   // The divider alone under the prescribed difference p1 - p2.
   auto alone = scene();
@@ -99,8 +100,8 @@ main(int argc, char **argv)
   ok             = ok && one.exit_code == 0;
   ok = pneuma_test::check("divider centre deflection: chambers vs prescribed "
                           "p1 - p2",
-                          two.monitor_displacements[0][0],
-                          one.monitor_displacements[0][0],
+                          two.summary.get_vector("m0_u")[0],
+                          one.summary.get_vector("m0_u")[0],
                           1e-6) &&
        ok;
   return ok ? 0 : 1;

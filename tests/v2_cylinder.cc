@@ -1,4 +1,4 @@
-// V2 (VERIFICATION.md): closed thin cylinder under internal pressure, the
+// V2 (doc/verification.md): closed thin cylinder under internal pressure, the
 // paper's geometry (R = 0.23 m, L = 2 m, t = 1 mm, E = 7.6e9 Pa, nu = 0.3)
 // with rigid steel end plates, measured at mid-length.
 //  (a) linear theory, checked at p = 1e4 Pa where finite-strain effects are
@@ -20,7 +20,7 @@ namespace
 {
   const double R = 0.23, L = 2., t = 1e-3, E = 7.6e9, nu = 0.3;
 
-  pneuma::RunSummary
+  pneuma::RunResult
   run_cylinder(const std::string &law,
                const double       pressure,
                const unsigned int refinement)
@@ -54,11 +54,15 @@ namespace
   };
 
   MidLength
-  measure(const pneuma::RunSummary &s)
+  measure(const pneuma::RunResult &s)
   {
-    const auto &u = s.monitor_displacements;
-    const auto &x = s.monitor_positions;
-    return {u[0][1], (u[2][0] - u[1][0]) / (x[2][0] - x[1][0])};
+    const auto u = [&](const unsigned int m) {
+      return s.summary.get_vector("m" + std::to_string(m) + "_u");
+    };
+    const auto x = [&](const unsigned int m) {
+      return s.summary.get_vector("m" + std::to_string(m) + "_position");
+    };
+    return {u(0)[1], (u(2)[0] - u(1)[0]) / (x(2)[0] - x(1)[0])};
   }
 } // namespace
 

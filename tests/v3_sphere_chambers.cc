@@ -1,4 +1,4 @@
-// V3 (VERIFICATION.md) through the limit point: the incompressible
+// V3 (doc/verification.md) through the limit point: the incompressible
 // neo-Hookean sphere, p R/(mu H) = 2 (1/l - 1/l^7), inflated past
 // l = 7^(1/6) = 1.383 by a chamber
 //  - with prescribed volume V/V0 = l^3 (the pressure is the Lagrange
@@ -16,7 +16,7 @@
 
 namespace
 {
-  pneuma::RunSummary
+  pneuma::RunResult
   sphere(const pneuma_test::Settings &chamber)
   {
     pneuma_test::Settings s = {
@@ -40,16 +40,16 @@ namespace
   }
 
   bool
-  check_path(const pneuma::RunSummary &s, const std::string &mode)
+  check_path(const pneuma::RunResult &s, const std::string &mode)
   {
     bool ok = s.exit_code == 0;
-    const double V0 = s.chamber_history.front().second[0].volume;
-    for (const auto &[t, states] : s.chamber_history)
+    const double V0 = s.history.front().get("c1_volume");
+    for (const auto &row : s.history)
       for (const double t_ref : {0.5, 1., 2.})
-        if (std::abs(t - t_ref) < 1e-9)
+        if (std::abs(row.get("time") - t_ref) < 1e-9)
           {
             const double l_target = 1. + t_ref;
-            const double l        = std::cbrt(states[0].volume / V0);
+            const double l        = std::cbrt(row.get("c1_volume") / V0);
             const double p_ref =
               2. * (1. / l_target - std::pow(l_target, -7.));
             char name[96];
@@ -58,7 +58,7 @@ namespace
             ok = pneuma_test::check(name, l, l_target, 5e-3) && ok;
             std::snprintf(name, sizeof(name), "%s, l = %.1f: pR/(muH)",
                           mode.c_str(), l_target);
-            ok = pneuma_test::check(name, states[0].pressure / 1e3, p_ref,
+            ok = pneuma_test::check(name, row.get("c1_pressure") / 1e3, p_ref,
                                     5e-3) &&
                  ok;
           }

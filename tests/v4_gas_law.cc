@@ -1,4 +1,4 @@
-// V4 (VERIFICATION.md): the adiabatic gas law p V^kappa = const. Halving a
+// V4 (doc/verification.md): the adiabatic gas law p V^kappa = const. Halving a
 // volume gives p/p0 = 2^1.4 = 2.639016 with the exact law. The source
 // paper's incremental update p = p_old - kappa p_old (V - V_old)/V_old is
 // first order in the step: with N equal volume steps p/p0 = 1.7000 (N=1),

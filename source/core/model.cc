@@ -47,6 +47,12 @@ namespace pneuma
     for (const auto &entry : subsystem_entries())
       if (entry.is_active(layout))
         subsystems.push_back(entry.create(*this));
+    // Checked before any TimerOutput exists: one destroyed while an input
+    // error propagates prints deal.II's multi-line MPI warning on stderr.
+    check_input(!subsystems.empty(),
+                "Geometry/Type",
+                "the scene has nothing to solve: no membrane (Type is "
+                "none) and no cables (Cables/Number of cables)");
     own_timer = std::make_unique<TimerOutput>(comm,
                                               pcout,
                                               TimerOutput::never,

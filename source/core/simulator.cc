@@ -24,10 +24,6 @@ namespace pneuma
       , model(comm, layout)
       , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
     {
-      check_input(!model.all().empty(),
-                  "Geometry/Type",
-                  "the scene has nothing to solve: no membrane (Type is "
-                  "none) and no cables (Cables/Number of cables)");
       model.set_timer(timer);
     }
 
@@ -43,7 +39,9 @@ namespace pneuma
     MPI_Comm                 comm;
     InputLayout              layout;
     ConditionalOStream       pcout;
-    /// Made first: an input error in it leaves no timer to finalize.
+    /// The model (whose subsystems check the input layout) before the
+    /// timer: no TimerOutput is alive while a construction error
+    /// propagates.
     Model                    model;
     TimerOutput              timer;
     Timer                    wall_clock;
