@@ -23,12 +23,12 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const pneuma_test::Settings              settings = {
                  {"Geometry/Type", "disc"},
-                 {"Geometry/Radius", "0.1425"},
+                 {"Geometry/disc/Radius", "0.1425"},
                  {"Geometry/Global refinements", "2"},
-                 {"Materials/Region 0/Law", "St. Venant-Kirchhoff"},
+                 {"Materials/Region 0/Law", "Saint Venant-Kirchhoff"},
                  {"Materials/Region 0/Thickness", "1e-3"},
-                 {"Materials/Region 0/Young's modulus", "3.11488e8"},
-                 {"Materials/Region 0/Poisson's ratio", "0.34"},
+                 {"Materials/Region 0/Saint Venant-Kirchhoff/Young's modulus", "3.11488e8"},
+                 {"Materials/Region 0/Saint Venant-Kirchhoff/Poisson's ratio", "0.34"},
                  {"Loads/Pressure/Function expression", "1e4*t"},
                  {"Boundary conditions/Fixed boundaries", "0: xyz"},
                  {"Load stepping/Initial increment", "0.25"},

@@ -19,18 +19,18 @@ namespace
 {
   const pneuma_test::Settings sphere = {
     {"Geometry/Type", "sphere"},
-    {"Geometry/Radius", "1"},
+    {"Geometry/sphere/Radius", "1"},
     {"Geometry/Global refinements", "1"},
     {"Materials/Region 0/Law", "neo-Hookean"},
-    {"Materials/Region 0/Shear modulus", "1e6"},
+    {"Materials/Region 0/neo-Hookean/Shear modulus", "1e6"},
     {"Chambers/Number of chambers", "1"},
     {"Chambers/Chamber 1/Regions", "0"}};
 
   const pneuma_test::Settings tank = {
     {"Geometry/Type", "disc"},
-    {"Geometry/Radius", "0.5"},
+    {"Geometry/disc/Radius", "0.5"},
     {"Geometry/Global refinements", "2"},
-    {"Materials/Region 0/Young's modulus", "1e9"},
+    {"Materials/Region 0/Saint Venant-Kirchhoff/Young's modulus", "1e9"},
     {"Boundary conditions/Fixed boundaries", "0: xyz"},
     {"Chambers/Number of chambers", "1"},
     {"Chambers/Chamber 1/Regions", "-0"},
@@ -40,12 +40,12 @@ namespace
 
   const pneuma_test::Settings tube = {
     {"Geometry/Type", "closed cylinder"},
-    {"Geometry/Radius", "0.23"},
-    {"Geometry/Length", "2"},
+    {"Geometry/closed cylinder/Radius", "0.23"},
+    {"Geometry/closed cylinder/Length", "2"},
     {"Geometry/Global refinements", "2"},
-    {"Materials/Region 0/Young's modulus", "7.6e9"},
-    {"Materials/Region 1/Young's modulus", "7.6e9"},
-    {"Materials/Region 2/Young's modulus", "7.6e9"},
+    {"Materials/Region 0/Saint Venant-Kirchhoff/Young's modulus", "7.6e9"},
+    {"Materials/Region 1/Saint Venant-Kirchhoff/Young's modulus", "7.6e9"},
+    {"Materials/Region 2/Saint Venant-Kirchhoff/Young's modulus", "7.6e9"},
     {"Chambers/Number of chambers", "1"},
     {"Chambers/Chamber 1/Regions", "0, 1, 2"},
     {"Chambers/Chamber 1/Filling", "liquid and gas"},
@@ -100,15 +100,15 @@ main(int argc, char **argv)
   // Liquid + gas filling of the airbeam tube.
   const auto s = pneuma_test::run(
     {{"Geometry/Type", "closed cylinder"},
-     {"Geometry/Radius", "0.23"},
-     {"Geometry/Length", "2"},
+     {"Geometry/closed cylinder/Radius", "0.23"},
+     {"Geometry/closed cylinder/Length", "2"},
      {"Geometry/Global refinements", "3"},
      {"Materials/Region 0/Thickness", "1e-3"},
-     {"Materials/Region 0/Young's modulus", "7.6e9"},
+     {"Materials/Region 0/Saint Venant-Kirchhoff/Young's modulus", "7.6e9"},
      {"Materials/Region 1/Thickness", "1e-2"},
-     {"Materials/Region 1/Young's modulus", "2.1e11"},
+     {"Materials/Region 1/Saint Venant-Kirchhoff/Young's modulus", "2.1e11"},
      {"Materials/Region 2/Thickness", "1e-2"},
-     {"Materials/Region 2/Young's modulus", "2.1e11"},
+     {"Materials/Region 2/Saint Venant-Kirchhoff/Young's modulus", "2.1e11"},
      {"Boundary conditions/Rigid regions", "1, 2"},
      {"Boundary conditions/Fixed points",
       "0,0,0: xyz; 2,0,0: yz; 0.05,0,0.23: y"},

@@ -33,10 +33,13 @@ namespace
   cylinder()
   {
     return {{"Geometry/Type", "closed cylinder"},
-            {"Geometry/Radius", "0.23"},
-            {"Geometry/Length", "2"},
+            {"Geometry/closed cylinder/Radius", "0.23"},
+            {"Geometry/closed cylinder/Length", "2"},
             {"Geometry/Global refinements", "2"},
             {"Discretisation/Polynomial degree", "2"},
+            {"Materials/Region 0/Thickness", "1e-3"},
+            {"Materials/Region 1/Thickness", "1e-3"},
+            {"Materials/Region 2/Thickness", "1e-3"},
             {"Boundary conditions/Fixed regions", "0, 1, 2"},
             {"Contact/Number of pairs", "1"},
             {"Contact/Pair 1/Penalty", "1e8"},

@@ -50,10 +50,13 @@ namespace
   wrap(const unsigned int degree)
   {
     return {{"Geometry/Type", "closed cylinder"},
-            {"Geometry/Radius", "0.23"},
-            {"Geometry/Length", "2"},
+            {"Geometry/closed cylinder/Radius", "0.23"},
+            {"Geometry/closed cylinder/Length", "2"},
             {"Geometry/Global refinements", "2"},
             {"Discretisation/Polynomial degree", std::to_string(degree)},
+            {"Materials/Region 0/Thickness", "1e-3"},
+            {"Materials/Region 1/Thickness", "1e-3"},
+            {"Materials/Region 2/Thickness", "1e-3"},
             {"Boundary conditions/Fixed regions", "0, 1, 2"},
             {"Cables/Number of cables", "1"},
             {"Cables/Cable 1/Points", wrap_points()},

@@ -15,19 +15,19 @@ main(int argc, char **argv)
   bool                                     ok = true;
 
   for (const std::string law :
-       {"St. Venant-Kirchhoff", "neo-Hookean", "Mooney-Rivlin"})
+       {"Saint Venant-Kirchhoff", "neo-Hookean", "Mooney-Rivlin"})
     for (const unsigned int degree : {1u, 2u})
       {
         const auto simulator = pneuma_test::make(
           {{"Geometry/Type", "sphere"},
-           {"Geometry/Radius", "1"},
+           {"Geometry/sphere/Radius", "1"},
            {"Geometry/Global refinements", "1"},
            {"Discretisation/Polynomial degree", std::to_string(degree)},
            {"Materials/Region 0/Law", law},
-           {"Materials/Region 0/Young's modulus", "1e6"},
-           {"Materials/Region 0/Shear modulus", "1e6"},
-           {"Materials/Region 0/C10", "3e5"},
-           {"Materials/Region 0/C01", "2e5"},
+           {"Materials/Region 0/Saint Venant-Kirchhoff/Young's modulus", "1e6"},
+           {"Materials/Region 0/neo-Hookean/Shear modulus", "1e6"},
+           {"Materials/Region 0/Mooney-Rivlin/C10", "3e5"},
+           {"Materials/Region 0/Mooney-Rivlin/C01", "2e5"},
            {"Loads/Pressure/Function expression", "800*t"},
            {"Output/Quiet", "true"}});
         const double error = simulator->check_tangent(1., 0.05, 1e-6).first;
@@ -45,10 +45,10 @@ main(int argc, char **argv)
   // first of the step) of the last iteration above round-off.
   const auto s =
     pneuma_test::run({{"Geometry/Type", "disc"},
-                      {"Geometry/Radius", "0.1425"},
+                      {"Geometry/disc/Radius", "0.1425"},
                       {"Geometry/Global refinements", "3"},
-                      {"Materials/Region 0/Young's modulus", "3.11488e8"},
-                      {"Materials/Region 0/Poisson's ratio", "0.34"},
+                      {"Materials/Region 0/Saint Venant-Kirchhoff/Young's modulus", "3.11488e8"},
+                      {"Materials/Region 0/Saint Venant-Kirchhoff/Poisson's ratio", "0.34"},
                       {"Loads/Pressure/Function expression", "1e4*t"},
                       {"Boundary conditions/Fixed boundaries", "0: xyz"},
                       {"Load stepping/Initial increment", "0.25"},

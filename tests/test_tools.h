@@ -61,6 +61,18 @@ namespace pneuma_test
     return simulator;
   }
 
+  /// Declare material regions @p ids with the default material (the input
+  /// must name every region of the mesh).
+  inline Settings
+  regions(const std::vector<unsigned int> &ids)
+  {
+    Settings s;
+    for (const auto id : ids)
+      s.emplace_back("Materials/Region " + std::to_string(id) + "/Thickness",
+                     "1e-3");
+    return s;
+  }
+
   /// Run pneuma quietly with @p settings on top of the defaults.
   inline pneuma::RunResult
   run(const Settings &settings, const MPI_Comm comm = MPI_COMM_WORLD)

@@ -23,12 +23,12 @@ main(int argc, char **argv)
         {
           const auto summary = pneuma_test::run(
             {{"Geometry/Type", "disc"},
-             {"Geometry/Radius", "0.1425"},
+             {"Geometry/disc/Radius", "0.1425"},
              {"Geometry/Global refinements", std::to_string(refinement)},
-             {"Materials/Region 0/Law", "St. Venant-Kirchhoff"},
+             {"Materials/Region 0/Law", "Saint Venant-Kirchhoff"},
              {"Materials/Region 0/Thickness", "1e-3"},
-             {"Materials/Region 0/Young's modulus", "3.11488e8"},
-             {"Materials/Region 0/Poisson's ratio", "0.34"},
+             {"Materials/Region 0/Saint Venant-Kirchhoff/Young's modulus", "3.11488e8"},
+             {"Materials/Region 0/Saint Venant-Kirchhoff/Poisson's ratio", "0.34"},
              {"Loads/Pressure/Function expression", std::to_string(q) + "*t"},
              {"Boundary conditions/Fixed boundaries", "0: xyz"},
              {"Load stepping/Initial increment", "0.25"},

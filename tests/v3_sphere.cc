@@ -16,12 +16,12 @@ namespace
     // R = 1, mu H = 1000 N/m. Supports that allow uniform expansion.
     return pneuma_test::run(
       {{"Geometry/Type", "sphere"},
-       {"Geometry/Radius", "1"},
+       {"Geometry/sphere/Radius", "1"},
        {"Geometry/Global refinements", "3"},
        {"Discretisation/Polynomial degree", "2"},
        {"Materials/Region 0/Law", "neo-Hookean"},
        {"Materials/Region 0/Thickness", "1e-3"},
-       {"Materials/Region 0/Shear modulus", "1e6"},
+       {"Materials/Region 0/neo-Hookean/Shear modulus", "1e6"},
        {"Loads/Pressure/Function expression", std::to_string(p) + "*t"},
        {"Boundary conditions/Fixed points",
         "0,0,1: xy; 0,0,-1: xy; 1,0,0: yz; -1,0,0: yz"},

@@ -21,12 +21,12 @@ namespace
   {
     pneuma_test::Settings s = {
       {"Geometry/Type", "sphere"},
-      {"Geometry/Radius", "1"},
+      {"Geometry/sphere/Radius", "1"},
       {"Geometry/Global refinements", "3"},
       {"Discretisation/Polynomial degree", "2"},
       {"Materials/Region 0/Law", "neo-Hookean"},
       {"Materials/Region 0/Thickness", "1e-3"},
-      {"Materials/Region 0/Shear modulus", "1e6"},
+      {"Materials/Region 0/neo-Hookean/Shear modulus", "1e6"},
       {"Boundary conditions/Fixed points",
        "0,0,1: xy; 0,0,-1: xy; 1,0,0: yz; -1,0,0: yz"},
       {"Chambers/Number of chambers", "1"},

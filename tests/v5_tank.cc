@@ -14,13 +14,13 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const auto s = pneuma_test::run(
     {{"Geometry/Type", "disc"},
-     {"Geometry/Radius", "0.5"},
+     {"Geometry/disc/Radius", "0.5"},
      {"Geometry/Global refinements", "3"},
      {"Discretisation/Polynomial degree", "2"},
-     {"Materials/Region 0/Law", "St. Venant-Kirchhoff"},
+     {"Materials/Region 0/Law", "Saint Venant-Kirchhoff"},
      {"Materials/Region 0/Thickness", "1e-3"},
-     {"Materials/Region 0/Young's modulus", "1e9"},
-     {"Materials/Region 0/Poisson's ratio", "0.3"},
+     {"Materials/Region 0/Saint Venant-Kirchhoff/Young's modulus", "1e9"},
+     {"Materials/Region 0/Saint Venant-Kirchhoff/Poisson's ratio", "0.3"},
      {"Boundary conditions/Fixed boundaries", "0: xyz"},
      {"Chambers/Number of chambers", "1"},
      {"Chambers/Chamber 1/Regions", "-0"},

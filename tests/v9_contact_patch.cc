@@ -67,7 +67,7 @@ main(int argc, char **argv)
       const double q_c  = q / (1. + T / EA_c);
       const auto   s  = pneuma_test::run(
         {{"Geometry/Type", "square"},
-         {"Geometry/Length", "1"},
+         {"Geometry/square/Side length", "1"},
          {"Geometry/Global refinements", std::to_string(c.refinements)},
          {"Discretisation/Polynomial degree", std::to_string(c.degree)},
          {"Boundary conditions/Fixed regions", "0"},

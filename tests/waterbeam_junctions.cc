@@ -36,7 +36,7 @@ main(int argc, char **argv)
   const std::string file = root + "/parameter_files/waterbeam_filling.prm";
   // Further "Path/Entry=value" overrides from the command line (to
   // explore variants by hand).
-  pneuma_test::Settings settings = {{"Geometry/Mesh file",
+  pneuma_test::Settings settings = {{"Geometry/gmsh/Mesh file",
                                      root + "/meshes/waterbeam.msh"},
                                     {"Output/Quiet", "true"}};
   for (int i = 1; i < argc; ++i)
