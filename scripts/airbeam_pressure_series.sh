@@ -21,15 +21,18 @@ for bar in 1 2 5 10 20 40; do
     --set "Load stepping/Maximum increment=0.1" \
     --set "Output/Write VTU=false" \
     --set "Output/Directory=$dir" > "$dir.log"
-  # history.csv: monitor m0..m3 uz are columns 8, 11, 14, 17 (1-based).
-  python3 - "$dir/history.csv" "$bar" >> "$out/load_deflection.csv" <<'PY'
-import csv, sys
-rows = list(csv.DictReader(open(sys.argv[1])))
+  # history.csv: the ring of monitor points m0..m3 at mid-span.
+  python3 - "$root/scripts" "$dir" "$bar" >> "$out/load_deflection.csv" <<'PY'
+import sys
+sys.path.insert(0, sys.argv[1])
+import pneuma_outputs
+rows = pneuma_outputs.history(sys.argv[2])
 def mean_uz(r):
-    return sum(float(r[f"m{i}_uz"]) for i in range(4)) / 4.0
-inflated = [r for r in rows if abs(float(r["time"]) - 1.0) < 1e-9][0]
+    return sum(r[f"m{i}_u_z"] for i in range(4)) / 4.0
+inflated = [r for r in rows if abs(r["time"] - 1.0) < 1e-9][0]
+sys.argv[2] = sys.argv[3]
 for r in rows:
-    t = float(r["time"])
+    t = r["time"]
     if t >= 1.0 - 1e-9:
         print(f"{sys.argv[2]},{1000.0 * (t - 1.0):.6g},{-(mean_uz(r) - mean_uz(inflated)):.6e}")
 PY

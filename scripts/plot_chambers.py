@@ -3,15 +3,15 @@
 
 Usage: scripts/plot_chambers.py OUTPUT_DIR [OUTPUT_DIR ...] [-o FILE.png]
 
-Reads OUTPUT_DIR/history.csv (columns c<k>_volume, c<k>_gas_volume,
-c<k>_liquid_volume, c<k>_pressure) and draws, like Figure 10 of the source
+Reads OUTPUT_DIR/history.csv (columns c<k>_volume [m^3], c<k>_gas_volume,
+c<k>_liquid_volume, c<k>_pressure [Pa]) and draws, like Figure 10 of the source
 paper, the gas and liquid volumes of every chamber relative to its initial
 volume (top; chambers of very different size share one axis) and the gauge
 pressures (bottom). Several directories (e.g. the same scene with gas and
 with water in chamber 2) are drawn into one figure. Writes
 OUTPUT_DIR/chambers.png unless -o is given.
 """
-import csv
+import os
 import sys
 
 import matplotlib
@@ -20,9 +20,12 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import pneuma_outputs  # noqa: E402
+
+
 def read(directory):
-    with open(f"{directory}/history.csv") as f:
-        rows = list(csv.DictReader(f))
+    rows = pneuma_outputs.history(directory)
     if not rows:
         sys.exit(f"plot_chambers: {directory}/history.csv has no rows")
     return rows
@@ -43,11 +46,11 @@ def main(argv):
     fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(7, 7))
     for d in dirs:
         rows = read(d)
-        t = [float(r["time"]) for r in rows]
+        t = [r["time"] for r in rows]
         k = 1
         while f"c{k}_volume" in rows[0]:
             def col(name):
-                return [float(r[f"c{k}_{name}"]) for r in rows]
+                return [r[f"c{k}_{name}"] for r in rows]
             gas, liquid = col("gas_volume"), col("liquid_volume")
             v0 = col("volume")[0]
             if any(gas):

@@ -29,12 +29,23 @@ measure() { # name, then pneuma arguments; prints wall s, peak MB
 field() { # json-ish summary value
   grep -o "\"$2\": [-0-9.e+]*" "$1/summary.json" | head -1 | awk '{print $NF}'
 }
+column() { # history.csv value: directory, column name, pseudo time or "last"
+  /usr/bin/python3 - "$root/scripts" "$@" <<'PY'
+import sys
+sys.path.insert(0, sys.argv[1])
+import pneuma_outputs
+rows = pneuma_outputs.history(sys.argv[2])
+row = rows[-1] if sys.argv[4] == "last" else \
+    [r for r in rows if abs(r["time"] - float(sys.argv[4])) < 1e-9][0]
+print(row[sys.argv[3]])
+PY
+}
 echo "## V3 sphere, volume control through the limit point (Q2)"
 echo "| refinements | cells | dofs | steps | Newton its | wall s | peak MB | pR/(muH) at l=2 | error |"
 echo "|---|---|---|---|---|---|---|---|---|"
 for r in 2 3 4; do
   read -r wall mb < <(measure sphere.prm --set "Geometry/Global refinements=$r")
-  p=$(awk -F, 'NR>1 && $2==1 {print $9}' out/sphere/history.csv)
+  p=$(column out/sphere c1_pressure 1)
   printf "| %s | %s | %s | %s | %s | %s | %s | %.6f | %+.2e |\n" "$r" \
     "$(field out/sphere cells)" "$(field out/sphere dofs)" \
     "$(field out/sphere steps)" "$(field out/sphere newton_iterations)" \
@@ -48,7 +59,7 @@ echo "|---|---|---|---|---|---|---|---|---|---|"
 for r in 2 3 4; do
   read -r wall mb < <(measure tank.prm --set "Geometry/Global refinements=$r")
   h=$(grep -o '"level": [-0-9.e+]*' out/tank/summary.json | awk '{print $2}')
-  w=$(tail -1 out/tank/history.csv | cut -d, -f7)
+  w=$(column out/tank m0_u_z last)
   printf "| %s | %s | %s | %s | %s | %s | %.6f | %+.2e | %.3f | %+.2e |\n" "$r" \
     "$(field out/tank cells)" "$(field out/tank dofs)" \
     "$(field out/tank newton_iterations)" "$wall" "$mb" "$h" \
@@ -65,7 +76,7 @@ for n in 6 12 24; do
   gmsh -2 -format msh22 -setnumber n "$n" "$root/meshes/waterbeam.geo" \
     -o "out/waterbeam_$n.msh" > /dev/null
   read -r wall mb < <(measure "$root/parameter_files/waterbeam_filling.prm" \
-    --set "Geometry/Mesh file=out/waterbeam_$n.msh" \
+    --set "Geometry/gmsh/Mesh file=out/waterbeam_$n.msh" \
     --set "Load stepping/Stage end times=1, 2" \
     --set "Load stepping/Initial increment=0.125" \
     --set "Load stepping/Maximum increment=0.125" \
@@ -73,13 +84,15 @@ for n in 6 12 24; do
     --set "Chambers/Chamber 3/Gas/Seal time=-1" \
     --set "Chambers/Chamber 3/Liquid/Volume/Function expression=0.005*min(max(t-1,0),1)" \
     --set "Output/Write VTU=false" --set "Output/Directory=out/waterbeam")
-  /usr/bin/python3 - "$n" "$wall" "$mb" out/waterbeam >> out/waterbeam_rows.txt <<'PY'
-import csv, json, sys
-n, wall, mb, d = sys.argv[1:5]
-s = json.load(open(f"{d}/summary.json"))
-r = list(csv.DictReader(open(f"{d}/history.csv")))[-1]
+  /usr/bin/python3 - "$root/scripts" "$n" "$wall" "$mb" out/waterbeam >> out/waterbeam_rows.txt <<'PY'
+import sys
+sys.path.insert(0, sys.argv[1])
+import pneuma_outputs
+n, wall, mb, d = sys.argv[2:6]
+s = pneuma_outputs.summary(d)
+r = pneuma_outputs.history(d)[-1]
 print(n, s["cells"], s["dofs"], s["steps"], s["newton_iterations"], wall, mb,
-      r["c3_level"], r["c1_volume"], float(r["m4_uz"]) * 1e3)
+      r["c3_level"], r["c1_volume"], r["m4_u_z"] * 1e3)
 PY
 done
 /usr/bin/python3 - out/waterbeam_rows.txt <<'PY'
