@@ -211,7 +211,7 @@ namespace pneuma
       {
         const auto eq = o.find('=');
         if (eq == std::string::npos)
-          continue; // read_parameters() reports it
+          continue; // parse_input() reports it
         const auto path = Utilities::split_string_list(o.substr(0, eq), '/');
         std::vector<std::string> stack;
         for (unsigned int i = 0; i + 1 < path.size(); ++i)
