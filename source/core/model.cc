@@ -325,6 +325,14 @@ namespace pneuma
   }
 
   void
+  Model::reject_step(const double t)
+  {
+    current_time = t;
+    for (const auto &s : subsystems)
+      s->reject_step();
+  }
+
+  void
   Model::refresh(const solvers::BorderedVector &state)
   {
     ghost(state.field);

@@ -62,8 +62,8 @@ namespace pneuma
               result.message   = impossible +
                                ". The last converged state (t = " +
                                std::to_string(t_old) + ") is written.";
-              result.state       = last;
-              model.current_time = t_old;
+              result.state = last;
+              model.reject_step(t_old);
               break;
             }
 
@@ -88,8 +88,8 @@ namespace pneuma
           if (!newton.converged)
             {
               ++result.cutbacks;
-              result.state       = last;
-              model.current_time = t_old;
+              result.state = last;
+              model.reject_step(t_old);
               dt                 = stepping.cut(t_new - t_old);
               out << "  Newton failed (" << newton.failure_reason
                   << "); cutting back to dt = " << dt << std::endl;

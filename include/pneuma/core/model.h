@@ -179,6 +179,10 @@ namespace pneuma
     /// Accept the converged @p state at @p t.
     void
     commit_step(const double t, const solvers::BorderedVector &state);
+    /// The step begun last is rejected; @p t is the time of the last
+    /// converged state.
+    void
+    reject_step(const double t);
     /// Renew reports that depend on the last assembly (contact points) at
     /// the converged @p state.
     void

@@ -273,6 +273,12 @@ namespace pneuma
       (void)field;
       (void)border;
     }
+    /// The step begun last was rejected (Newton failed or the state was
+    /// not admissible): forget what begin_step() predicted; the strategy
+    /// restores the field and border of the last converged state.
+    virtual void
+    reject_step()
+    {}
     /// Reports of a converged state that need the final assembly (contact
     /// points at the accepted state).
     virtual void
