@@ -7,7 +7,7 @@
 set -euo pipefail
 packages=(build-essential cmake ccache libdeal.ii-dev numdiff
           libopenblas0-pthread
-          gmsh openmpi-bin time python3 python3-matplotlib)
+          gmsh openmpi-bin time python3 python3-matplotlib clang-format)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" \
