@@ -73,6 +73,12 @@ check "$c" 1 "Chambers/Chamber 1/Gas/Control" --set "Chambers/Chamber 1/Filling=
 check "$c" 1 "Chambers/Chamber 1/Liquid/Volume: the liquid volume 1 m^3 at t = 0 does not fit" --set "Chambers/Chamber 1/Filling=liquid" --set "Chambers/Chamber 1/Liquid/Volume/Function expression=1"
 check "$c" 2 "does not fit" --set "Chambers/Chamber 1/Filling=liquid" --set "Chambers/Chamber 1/Liquid/Volume/Function expression=t"
 check "$c" 0 "finished"
+check "$c" 0 "finished" --set "Chambers/Chamber 1/Gas/Law=isothermal"
+check "$c" 1 "Chambers/Chamber 1/Gas/Law: The string <ideal> does not match" --set "Chambers/Chamber 1/Gas/Law=ideal"
+check "$c" 1 "Chambers/Chamber 1/Gas/adiabatic/Exponent" --set "Chambers/Chamber 1/Gas/adiabatic/Exponent=0.5"
+check "$c" 1 "Chambers/Chamber 1/Gas/Adiabatic exponent" --set "Chambers/Chamber 1/Gas/Adiabatic exponent=1.4"
+check "$dir/valid.prm" 1 "Linear solver/direct/Ordering" --set "Linear solver/direct/Ordering=nested"
+check "$dir/valid.prm" 1 "Linear solver/MUMPS ordering" --set "Linear solver/MUMPS ordering=amd"
 g=(--set "Geometry/Type=gmsh" --set "Boundary conditions/Rigid regions=" --set "Boundary conditions/Fixed points=")
 check "$dir/valid.prm" 1 "triangles.msh': holds triangles" "${g[@]}" --set "Geometry/gmsh/Mesh file=$dir/triangles.msh"
 check "$dir/valid.prm" 1 "binary.msh': is a binary Gmsh file" "${g[@]}" --set "Geometry/gmsh/Mesh file=$dir/binary.msh"

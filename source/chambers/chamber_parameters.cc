@@ -3,6 +3,7 @@
 #include <pneuma/chambers/chamber_parameters.h>
 #include <pneuma/core/input_error.h>
 #include <pneuma/core/input_layout.h>
+#include <pneuma/core/selection_parameter.h>
 #include <pneuma/loads/loads.h>
 
 namespace pneuma
@@ -21,100 +22,99 @@ namespace pneuma
     }
 
     void
-    ChamberParameters::declare_parameters(ParameterHandler &prm,
-                          const InputLayout &layout)
+    ChamberParameters::declare_parameters(ParameterHandler  &prm,
+                                          const InputLayout &layout)
     {
       prm.enter_subsection("Chambers");
-      prm.declare_entry("Ambient pressure",
-                        "101325",
-                        Patterns::Double(0.),
+      prm.add_parameter("Ambient pressure",
+                        ambient_pressure,
                         "Absolute ambient pressure [Pa]; pressures of "
-                        "chambers are gauge pressures above it.");
-      prm.declare_entry("Gravity",
-                        "0, 0, -9.81",
-                        Patterns::List(Patterns::Double(), 3, 3),
+                        "chambers are gauge pressures above it.",
+                        Patterns::Double(0.));
+      prm.add_parameter("Gravity",
+                        gravity,
                         "Gravitational acceleration acting on liquid "
                         "fillings [m/s^2]; the free-surface level is "
-                        "measured against it.");
-      for (const auto &instance :
-           layout.numbered("Chambers", "Chamber", "Chambers/Number of chambers"))
+                        "measured against it.",
+                        Patterns::List(Patterns::Double(), 3, 3));
+      const auto instances =
+        layout.numbered("Chambers", "Chamber", "Chambers/Number of chambers");
+      // Sized once: the entries are bound to these members.
+      chambers.clear();
+      chambers.resize(instances.size());
+      text.clear();
+      text.resize(instances.size());
+      for (unsigned int c = 0; c < instances.size(); ++c)
         {
-          prm.enter_subsection(instance);
-          prm.declare_entry(
+          ChamberDefinition &def = chambers[c];
+          Text              &t   = text[c];
+          def.path               = "Chambers/" + instances[c];
+          prm.enter_subsection(instances[c]);
+          prm.add_parameter(
             "Regions",
-            "",
-            Patterns::Anything(),
+            t.regions,
             "Material ids of the walls, comma separated. A minus sign "
             "(e.g. -3) flips a wall: use it for a wall whose outward normal "
             "(Geometry/Orientation) points into this chamber, such as a "
-            "divider listed by two chambers.");
-          prm.declare_entry("Interior point",
-                            "",
-                            Patterns::Anything(),
+            "divider listed by two chambers.",
+            Patterns::Anything());
+          prm.add_parameter("Interior point",
+                            t.interior_point,
                             "x, y, z of a point inside a convex chamber: "
                             "orients every wall away from it (then the "
                             "signs in Regions are ignored). Empty: use the "
-                            "signs.");
-          prm.declare_entry("Open",
-                            "false",
-                            Patterns::Bool(),
+                            "signs.",
+                            Patterns::Anything());
+          prm.add_parameter("Open",
+                            def.open,
                             "A tank: the listed walls are closed by rigid "
                             "walls parallel to gravity that are not meshed "
                             "(liquid fillings only).");
-          prm.declare_entry("Filling",
-                            "gas",
-                            Patterns::Selection(
-                              "gas|liquid|liquid and gas|connected"),
-                            "What fills the chamber. connected: it shares "
-                            "the filling (pressure, level) of the chamber "
-                            "named in Connected to.");
-          prm.declare_entry("Connected to",
-                            "0",
-                            Patterns::Integer(0, max_chambers),
+          add_selection(prm,
+                        "Filling",
+                        def.filling,
+                        {{"gas", Filling::gas},
+                         {"liquid", Filling::liquid},
+                         {"liquid and gas", Filling::liquid_and_gas},
+                         {"connected", Filling::connected}},
+                        "What fills the chamber. connected: it shares the "
+                        "filling (pressure, level) of the chamber named in "
+                        "Connected to.");
+          prm.add_parameter("Connected to",
+                            t.connected_to,
                             "For Filling = connected: the number of an "
-                            "earlier chamber whose filling this one shares.");
+                            "earlier chamber whose filling this one shares.",
+                            Patterns::Integer(0, max_chambers));
           prm.enter_subsection("Gas");
-          prm.declare_entry("Law",
-                            "adiabatic",
-                            Patterns::Selection("adiabatic|isothermal"),
-                            "p V^kappa = const with kappa = Adiabatic "
-                            "exponent, or p V = const.");
-          prm.declare_entry("Adiabatic exponent",
-                            "1.4",
-                            Patterns::Double(1.),
-                            "kappa of the adiabatic law (1.4 for air).");
-          prm.declare_entry("Update",
-                            "exact",
-                            Patterns::Selection("exact|incremental"),
-                            "exact: the law itself; incremental: the "
-                            "source paper's first-order update about the "
-                            "last converged step (its equation 2).");
-          prm.declare_entry("Control",
-                            "pressure",
-                            Patterns::Selection("pressure|gas amount|volume"),
-                            "pressure: the gauge pressure follows the "
-                            "Pressure curve; gas amount: the amount follows "
-                            "the Gas amount curve and the pressure the gas "
-                            "law; volume: the volume follows the Volume "
-                            "curve and the pressure is its Lagrange "
-                            "multiplier.");
-          prm.declare_entry("Seal time",
-                            "-1",
-                            Patterns::Double(),
+          def.gas_law.declare_parameters(prm);
+          add_selection(prm,
+                        "Control",
+                        def.control,
+                        {{"pressure", GasControl::pressure},
+                         {"gas amount", GasControl::amount},
+                         {"volume", GasControl::volume}},
+                        "pressure: the gauge pressure follows the Pressure "
+                        "curve; gas amount: the amount follows the Gas "
+                        "amount curve and the pressure the gas law; volume: "
+                        "the volume follows the Volume curve and the "
+                        "pressure is its Lagrange multiplier.");
+          prm.add_parameter("Seal time",
+                            def.seal_time,
                             "With Control = pressure: after the step that "
                             "reaches this pseudo time (use a stage end) the "
                             "chamber is sealed; its gas amount stays fixed "
                             "and the pressure follows the gas law. "
-                            "Negative: never.");
+                            "Negative: never.",
+                            Patterns::Double());
           loads::declare_function(prm, "Pressure", 1, "0");
           loads::declare_function(prm, "Gas amount", 1, "1");
           loads::declare_function(prm, "Volume", 1, "1");
           prm.leave_subsection();
           prm.enter_subsection("Liquid");
-          prm.declare_entry("Density",
-                            "1000",
-                            Patterns::Double(0.),
-                            "Density of the liquid [kg/m^3].");
+          prm.add_parameter("Density",
+                            def.density,
+                            "Density of the liquid [kg/m^3].",
+                            Patterns::Double(0.));
           loads::declare_function(prm, "Volume", 1, "0");
           prm.leave_subsection();
           prm.leave_subsection();
@@ -126,24 +126,18 @@ namespace pneuma
     ChamberParameters::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Chambers");
-      const unsigned int n = prm.get_integer("Number of chambers");
-      ambient_pressure     = prm.get_double("Ambient pressure");
-      {
-        const auto g = Utilities::string_to_double(
-          Utilities::split_string_list(prm.get("Gravity")));
-        for (unsigned int d = 0; d < 3; ++d)
-          gravity[d] = g[d];
-      }
-      chambers.clear();
-      chambers.resize(n);
+      const unsigned int n = chambers.size();
+      AssertThrow(static_cast<long>(n) == prm.get_integer("Number of chambers"),
+                  ExcMessage("the chambers declared are not those of the "
+                             "input"));
       for (unsigned int c = 0; c < n; ++c)
         {
           ChamberDefinition &def = chambers[c];
-          def.path = "Chambers/Chamber " + std::to_string(c + 1);
+          const Text        &t   = text[c];
           prm.enter_subsection("Chamber " + std::to_string(c + 1));
 
-          for (auto entry :
-               Utilities::split_string_list(prm.get("Regions"), ','))
+          def.regions.clear();
+          for (auto entry : Utilities::split_string_list(t.regions, ','))
             {
               int sign = 1;
               if (!entry.empty() && (entry[0] == '-' || entry[0] == '+'))
@@ -167,28 +161,21 @@ namespace pneuma
           check_input(!def.regions.empty(),
                       def.path + "/Regions",
                       "is empty: a chamber needs walls");
-          const std::string interior = prm.get("Interior point");
-          def.use_interior_point     = !Utilities::trim(interior).empty();
+          def.use_interior_point = !Utilities::trim(t.interior_point).empty();
           if (def.use_interior_point)
             def.interior_point =
-              loads::parse_point(interior, def.path + "/Interior point");
-          def.open = prm.get_bool("Open");
+              loads::parse_point(t.interior_point,
+                                 def.path + "/Interior point");
 
-          const std::string filling = prm.get("Filling");
-          def.filling               = filling == "gas"    ? Filling::gas :
-                                      filling == "liquid" ? Filling::liquid :
-                                      filling == "connected" ?
-                                                            Filling::connected :
-                                                            Filling::liquid_and_gas;
-          const unsigned int to     = prm.get_integer("Connected to");
           if (def.filling == Filling::connected)
             {
-              check_input(to >= 1 && to <= c,
+              check_input(t.connected_to >= 1 && t.connected_to <= c,
                           def.path + "/Connected to",
-                          "must name an earlier chamber (1.." +
-                            std::to_string(c) + ")");
-              def.connected_to = to - 1;
-              check_input(chambers[to - 1].filling != Filling::connected,
+                          "must name an earlier chamber (1.."
+                            + std::to_string(c) + ")");
+              def.connected_to = t.connected_to - 1;
+              check_input(chambers[def.connected_to].filling
+                            != Filling::connected,
                           def.path + "/Connected to",
                           "names a chamber that is itself connected; name "
                           "the first chamber of the group");
@@ -197,18 +184,10 @@ namespace pneuma
             def.connected_to = c;
 
           prm.enter_subsection("Gas");
-          const bool   isothermal = prm.get("Law") == "isothermal";
-          const double kappa =
-            isothermal ? 1. : prm.get_double("Adiabatic exponent");
-          def.gas_law = GasLaw(kappa, prm.get("Update") == "incremental");
-          const std::string control = prm.get("Control");
-          def.control = control == "pressure"   ? GasControl::pressure :
-                        control == "gas amount" ? GasControl::amount :
-                                                  GasControl::volume;
-          def.seal_time = prm.get_double("Seal time");
-          def.pressure  = std::make_unique<Functions::ParsedFunction<3>>(1);
-          def.amount    = std::make_unique<Functions::ParsedFunction<3>>(1);
-          def.volume    = std::make_unique<Functions::ParsedFunction<3>>(1);
+          def.gas_law.parse_parameters(prm, def.path + "/Gas");
+          def.pressure = std::make_unique<Functions::ParsedFunction<3>>(1);
+          def.amount   = std::make_unique<Functions::ParsedFunction<3>>(1);
+          def.volume   = std::make_unique<Functions::ParsedFunction<3>>(1);
           loads::parse_function(prm,
                                 *def.pressure,
                                 "Pressure",
@@ -233,7 +212,6 @@ namespace pneuma
                       "an open chamber (tank) can only hold a liquid");
 
           prm.enter_subsection("Liquid");
-          def.density       = prm.get_double("Density");
           def.liquid_volume = std::make_unique<Functions::ParsedFunction<3>>(1);
           loads::parse_function(prm,
                                 *def.liquid_volume,

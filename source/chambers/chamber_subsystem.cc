@@ -47,7 +47,7 @@ namespace pneuma
     ChamberSubsystem::declare_parameters(ParameterHandler &prm,
                                          const InputLayout &layout)
     {
-      ChamberParameters::declare_parameters(prm, layout);
+      parameters.declare_parameters(prm, layout);
     }
 
     void

@@ -53,7 +53,7 @@ namespace pneuma
     std::pair<double, double>
     ChamberSystem::gas_law(const Group &g, const double V_gas) const
     {
-      const GasLaw &law    = parameters.chambers[g.leader].gas_law;
+      const GasUpdate &law  = parameters.chambers[g.leader].gas_law;
       const double  amount = prescribed_amount(g);
       return {law.pressure(V_gas, amount, parameters.ambient_pressure, g.old),
               law.pressure_derivative(V_gas,
@@ -214,8 +214,9 @@ namespace pneuma
           else if (def.control == GasControl::amount)
             {
               g.amount = curve(*def.amount, t) * g.V0;
-              g.p = p_a * std::pow(g.amount / V_gas, def.gas_law.exponent()) -
-                    p_a;
+              // The law itself, also for the incremental update (it has
+              // no earlier state yet).
+              g.p = def.gas_law.law().pressure(V_gas, g.amount, p_a) - p_a;
             }
           else
             {
@@ -543,9 +544,8 @@ namespace pneuma
                   r.pressure          = g.p;
                   r.absolute_pressure = g.p + p_a;
                   r.gas_amount        = g.amount;
-                  r.pv_kappa =
-                    r.absolute_pressure *
-                    std::pow(V_gas_group, def.gas_law.exponent());
+                  r.pv_kappa = def.gas_law.law().invariant(
+                    {r.absolute_pressure, V_gas_group, g.amount});
                 }
             }
         }

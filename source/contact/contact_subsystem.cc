@@ -44,7 +44,7 @@ namespace pneuma
     ContactSubsystem::declare_parameters(ParameterHandler &prm,
                                          const InputLayout &layout)
     {
-      ContactParameters::declare_parameters(prm, layout);
+      parameters.declare_parameters(prm, layout);
     }
 
     void

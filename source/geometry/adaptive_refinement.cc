@@ -13,36 +13,32 @@ namespace pneuma
     AdaptiveRefinement::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Adaptive refinement");
-      prm.declare_entry("Cycles",
-                        "0",
-                        Patterns::Integer(0, 20),
+      prm.add_parameter("Cycles",
+                        n_cycles,
                         "Refinement cycles after the first run: each ranks "
                         "the cells by Kelly's indicator of the final "
                         "displacement, refines a fraction of them and runs "
                         "the load path again. Outputs go to "
                         "Output/Directory/cycle-<k>, a table of all cycles "
-                        "to Output/Directory/refinement.csv.");
-      prm.declare_entry("Refine fraction",
-                        "0.3",
-                        Patterns::Double(0., 1.),
+                        "to Output/Directory/refinement.csv.",
+                        Patterns::Integer(0, 20));
+      prm.add_parameter("Refine fraction",
+                        refine_fraction,
                         "Fraction of the cells (largest indicators) refined "
-                        "in each cycle.");
-      prm.declare_entry("Coarsen fraction",
-                        "0",
-                        Patterns::Double(0., 1.),
+                        "in each cycle.",
+                        Patterns::Double(0., 1.));
+      prm.add_parameter("Coarsen fraction",
+                        coarsen_fraction,
                         "Fraction of the cells (smallest indicators) "
-                        "coarsened in each cycle.");
+                        "coarsened in each cycle.",
+                        Patterns::Double(0., 1.));
       prm.leave_subsection();
     }
 
     void
-    AdaptiveRefinement::parse_parameters(ParameterHandler &prm)
+    AdaptiveRefinement::parse_parameters(ParameterHandler &)
     {
-      prm.enter_subsection("Adaptive refinement");
-      n_cycles         = prm.get_integer("Cycles");
-      refine_fraction  = prm.get_double("Refine fraction");
-      coarsen_fraction = prm.get_double("Coarsen fraction");
-      prm.leave_subsection();
+      // Every entry is bound by declare_parameters().
     }
 
     void

@@ -41,36 +41,33 @@ namespace pneuma
     BoundaryConditions::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Boundary conditions");
-      prm.declare_entry("Fixed boundaries",
-                        "",
-                        Patterns::Anything(),
+      prm.add_parameter("Fixed boundaries",
+                        text.fixed_boundaries,
                         "Clamped edges and symmetry planes: "
-                        "'id: components; ...', e.g. '0: xyz; 2: y'.");
-      prm.declare_entry("Fixed points",
-                        "",
-                        Patterns::Anything(),
+                        "'id: components; ...', e.g. '0: xyz; 2: y'.",
+                        Patterns::Anything());
+      prm.add_parameter("Fixed points",
+                        text.fixed_points,
                         "Supports at the mesh vertex nearest to a point [m]: "
-                        "'x, y, z: components; ...', e.g. '0,0,0: xyz'.");
-      prm.declare_entry("Fixed regions",
-                        "",
-                        Patterns::List(Patterns::Integer(0)),
+                        "'x, y, z: components; ...', e.g. '0,0,0: xyz'.",
+                        Patterns::Anything());
+      prm.add_parameter("Fixed regions",
+                        text.fixed_regions,
                         "Material ids whose nodes are all held fixed "
-                        "(rigid, fixed regions such as clamped end plates).");
-      prm.declare_entry("Prescribed displacement boundaries",
-                        "",
-                        Patterns::List(Patterns::Integer(0)),
+                        "(rigid, fixed regions such as clamped end plates).",
+                        Patterns::List(Patterns::Integer(0)));
+      prm.add_parameter("Prescribed displacement boundaries",
+                        text.displaced_boundaries,
                         "Boundary ids whose displacement follows the "
-                        "function 'Prescribed displacement' of (x,y,z,t).");
-      prm.declare_entry("Prescribed displacement regions",
-                        "",
-                        Patterns::List(Patterns::Integer(0)),
+                        "function 'Prescribed displacement' of (x,y,z,t).",
+                        Patterns::List(Patterns::Integer(0)));
+      prm.add_parameter("Prescribed displacement regions",
+                        text.displaced_regions,
                         "Material ids whose nodes all follow the function "
                         "'Prescribed displacement' of (x,y,z,t) (e.g. a "
-                        "piston or a moving end plate).");
-      prm.enter_subsection("Prescribed displacement");
-      Functions::ParsedFunction<3>::declare_parameters(prm, 3);
-      prm.set("Function expression", "0; 0; 0");
-      prm.leave_subsection();
+                        "piston or a moving end plate).",
+                        Patterns::List(Patterns::Integer(0)));
+      declare_function(prm, "Prescribed displacement", 3, "0; 0; 0");
       prm.leave_subsection();
     }
 
@@ -80,7 +77,7 @@ namespace pneuma
       prm.enter_subsection("Boundary conditions");
       fixed_boundaries.clear();
       for (const auto &item :
-           Utilities::split_string_list(prm.get("Fixed boundaries"), ';'))
+           Utilities::split_string_list(text.fixed_boundaries, ';'))
         {
           const std::string path = "Boundary conditions/Fixed boundaries";
           const auto        kv   = Utilities::split_string_list(item, ':');
@@ -93,7 +90,7 @@ namespace pneuma
         }
       fixed_points.clear();
       for (const auto &item :
-           Utilities::split_string_list(prm.get("Fixed points"), ';'))
+           Utilities::split_string_list(text.fixed_points, ';'))
         {
           const std::string path = "Boundary conditions/Fixed points";
           const auto        kv   = Utilities::split_string_list(item, ':');
@@ -104,15 +101,15 @@ namespace pneuma
           const Point<3> p = parse_point(kv[0], path);
           fixed_points.emplace_back(p, parse_components(kv[1], path));
         }
-      const auto fr = parse_id_list(prm.get("Fixed regions"),
-                                    "Boundary conditions/Fixed regions");
+      const auto fr =
+        parse_id_list(text.fixed_regions, "Boundary conditions/Fixed regions");
       fixed_regions = std::set<types::material_id>(fr.begin(), fr.end());
       const auto dr =
-        parse_id_list(prm.get("Prescribed displacement regions"),
+        parse_id_list(text.displaced_regions,
                       "Boundary conditions/Prescribed displacement regions");
       displaced_regions = std::set<types::material_id>(dr.begin(), dr.end());
       const auto db =
-        parse_id_list(prm.get("Prescribed displacement boundaries"),
+        parse_id_list(text.displaced_boundaries,
                       "Boundary conditions/Prescribed displacement boundaries");
       displaced_boundaries = std::set<types::boundary_id>(db.begin(), db.end());
       parse_function(prm,

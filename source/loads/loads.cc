@@ -114,25 +114,23 @@ namespace pneuma
     {
       prm.enter_subsection("Loads");
       declare_function(prm, "Pressure", 1, "0");
-      prm.declare_entry("Pressure regions",
-                        "",
-                        Patterns::List(Patterns::Integer(0)),
+      prm.add_parameter("Pressure regions",
+                        pressure_regions_text,
                         "Material ids on which the follower pressure acts; "
-                        "empty = all cells.");
-      prm.declare_entry("Gravity",
-                        "false",
-                        Patterns::Bool(),
+                        "empty = all cells.",
+                        Patterns::List(Patterns::Integer(0)));
+      prm.add_parameter("Gravity",
+                        gravity_on,
                         "Apply the gravity function to the membrane mass.");
       declare_function(prm, "Gravity vector", 3, "0; 0; -9.81");
-      prm.declare_entry("Surface load",
-                        "false",
-                        Patterns::Bool(),
+      prm.add_parameter("Surface load",
+                        surface_load_on,
                         "Apply the dead surface traction function.");
       declare_function(prm, "Surface traction", 3, "0; 0; 0");
-      prm.declare_entry("Line load boundaries",
-                        "",
-                        Patterns::List(Patterns::Integer(0)),
-                        "Boundary ids carrying the dead line load.");
+      prm.add_parameter("Line load boundaries",
+                        line_load_text,
+                        "Boundary ids carrying the dead line load.",
+                        Patterns::List(Patterns::Integer(0)));
       declare_function(prm, "Line load", 3, "0; 0; 0");
       prm.leave_subsection();
     }
@@ -143,20 +141,18 @@ namespace pneuma
       prm.enter_subsection("Loads");
       parse_function(prm, *pressure_function, "Pressure", "Loads/Pressure");
       const auto pr =
-        parse_id_list(prm.get("Pressure regions"), "Loads/Pressure regions");
+        parse_id_list(pressure_regions_text, "Loads/Pressure regions");
       pressure_ids = std::set<types::material_id>(pr.begin(), pr.end());
-      gravity_on   = prm.get_bool("Gravity");
       parse_function(prm,
                      *gravity_function,
                      "Gravity vector",
                      "Loads/Gravity vector");
-      surface_load_on = prm.get_bool("Surface load");
       parse_function(prm,
                      *surface_function,
                      "Surface traction",
                      "Loads/Surface traction");
-      const auto ll = parse_id_list(prm.get("Line load boundaries"),
-                                    "Loads/Line load boundaries");
+      const auto ll =
+        parse_id_list(line_load_text, "Loads/Line load boundaries");
       line_load_ids = std::set<types::boundary_id>(ll.begin(), ll.end());
       parse_function(prm, *line_function, "Line load", "Loads/Line load");
       prm.leave_subsection();

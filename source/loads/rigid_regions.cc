@@ -34,26 +34,24 @@ namespace pneuma
     RigidRegions::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Boundary conditions");
-      prm.declare_entry("Rigid regions",
-                        "",
-                        Patterns::Anything(),
+      prm.add_parameter("Rigid regions",
+                        text,
                         "Material ids of planar regions that move as rigid "
                         "plates (exact large rotations; in-plane stiffness "
                         "from the region's material). Ids joined by + form "
                         "one plate (e.g. 4+5+6, 7+8+9: a steel end plate "
                         "that closes several chambers). Supports go at the "
                         "plate's reference node, the vertex nearest its "
-                        "centroid.");
+                        "centroid.",
+                        Patterns::Anything());
       prm.leave_subsection();
     }
 
     void
-    RigidRegions::parse_parameters(ParameterHandler &prm)
+    RigidRegions::parse_parameters(ParameterHandler &)
     {
-      prm.enter_subsection("Boundary conditions");
       region_ids.clear();
-      for (const auto &group :
-           Utilities::split_string_list(prm.get("Rigid regions"), ','))
+      for (const auto &group : Utilities::split_string_list(text, ','))
         {
           std::set<types::material_id> plate;
           for (const auto &id : Utilities::split_string_list(group, '+'))
@@ -65,7 +63,6 @@ namespace pneuma
           if (!plate.empty())
             region_ids.push_back(plate);
         }
-      prm.leave_subsection();
     }
 
     IndexSet

@@ -55,10 +55,10 @@ namespace pneuma
                         Patterns::Integer(1, 2));
       prm.leave_subsection();
       scene.declare_parameters(prm);
-      geometry::AdaptiveRefinement::declare_parameters(prm);
+      adaptive.declare_parameters(prm);
       materials.declare_parameters(prm, layout);
-      loads::BoundaryConditions::declare_parameters(prm);
-      loads::RigidRegions::declare_parameters(prm);
+      boundary_conditions.declare_parameters(prm);
+      rigid_regions.declare_parameters(prm);
       prm.enter_subsection("Output");
       prm.declare_entry("Monitor points",
                         "",

@@ -23,66 +23,61 @@ namespace pneuma
     LinearSolver::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Linear solver");
-      prm.declare_entry("Type",
-                        "direct",
-                        Patterns::Selection("direct|amg"),
+      prm.add_parameter("Type",
+                        solver_type,
                         "direct: sparse LU (MUMPS or KLU through Trilinos "
                         "Amesos); amg: GMRES preconditioned by Trilinos ML "
-                        "algebraic multigrid.");
-      prm.declare_entry("Direct solver package",
-                        "Amesos_Mumps",
-                        Patterns::Selection("Amesos_Mumps|Amesos_Klu"),
-                        "Package of the direct solver.");
-      prm.declare_entry("MUMPS ordering",
-                        "amf",
-                        Patterns::Selection("metis|amd|amf|qamd|scotch|pord|auto"),
-                        "Fill-reducing ordering of MUMPS (ICNTL(7)). amf "
-                        "(approximate minimum fill) is the fastest on "
-                        "membrane meshes: the analysis phase with metis costs "
-                        "several numeric factorizations "
-                        "(benchmarks/inflated_cylinder/results.md).");
-      prm.declare_entry("Reuse factorization",
-                        "false",
-                        Patterns::Bool(),
-                        "Direct solver: solve later Newton systems by GMRES "
-                        "preconditioned by an earlier factorization, and "
-                        "factorize afresh only when that needs more than "
-                        "'Reuse iterations' iterations.");
-      prm.declare_entry("Reuse iterations",
-                        "8",
-                        Patterns::Integer(1, 100),
+                        "algebraic multigrid. Each type's settings are in "
+                        "the subsection of its name.",
+                        Patterns::Selection("direct|amg"));
+      prm.enter_subsection("direct");
+      prm.add_parameter("Package",
+                        direct_settings.package,
+                        "Package of the direct solver.",
+                        Patterns::Selection("Amesos_Mumps|Amesos_Klu"));
+      prm.add_parameter(
+        "Ordering",
+        direct_settings.ordering,
+        "Fill-reducing ordering of MUMPS (ICNTL(7)). amf (approximate "
+        "minimum fill) is the fastest on membrane meshes: the analysis "
+        "phase with metis costs several numeric factorizations "
+        "(benchmarks/inflated_cylinder/results.md).",
+        Patterns::Selection("metis|amd|amf|qamd|scotch|pord|auto"));
+      prm.add_parameter("Reuse factorization",
+                        direct_settings.reuse_factorization,
+                        "Solve later Newton systems by GMRES preconditioned "
+                        "by an earlier factorization, and factorize afresh "
+                        "only when that needs more than 'Reuse iterations' "
+                        "iterations.");
+      prm.add_parameter("Reuse iterations",
+                        direct_settings.reuse_iterations,
                         "GMRES iterations allowed on an earlier "
                         "factorization before the tangent is factorized "
-                        "again.");
-      prm.declare_entry("Reuse tolerance",
-                        "1e-9",
-                        Patterns::Double(1e-16, 1e-2),
+                        "again.",
+                        Patterns::Integer(1, 100));
+      prm.add_parameter("Reuse tolerance",
+                        direct_settings.reuse_tolerance,
                         "GMRES stopping tolerance relative to |b| for "
-                        "solves on an earlier factorization.");
-      prm.declare_entry("Relative tolerance",
-                        "1e-10",
-                        Patterns::Double(1e-16, 1.),
-                        "GMRES stopping tolerance relative to |b|.");
-      prm.declare_entry("Maximum iterations",
-                        "2000",
-                        Patterns::Integer(1),
-                        "GMRES iteration limit.");
+                        "solves on an earlier factorization.",
+                        Patterns::Double(1e-16, 1e-2));
+      prm.leave_subsection();
+      prm.enter_subsection("amg");
+      prm.add_parameter("Relative tolerance",
+                        amg_settings.relative_tolerance,
+                        "GMRES stopping tolerance relative to |b|.",
+                        Patterns::Double(1e-16, 1.));
+      prm.add_parameter("Maximum iterations",
+                        amg_settings.max_iterations,
+                        "GMRES iteration limit.",
+                        Patterns::Integer(1));
+      prm.leave_subsection();
       prm.leave_subsection();
     }
 
     void
-    LinearSolver::parse_parameters(ParameterHandler &prm)
+    LinearSolver::parse_parameters(ParameterHandler &)
     {
-      prm.enter_subsection("Linear solver");
-      solver_type        = prm.get("Type");
-      direct_package     = prm.get("Direct solver package");
-      ordering           = prm.get("MUMPS ordering");
-      relative_tolerance = prm.get_double("Relative tolerance");
-      max_iterations     = prm.get_integer("Maximum iterations");
-      reuse_factorization = prm.get_bool("Reuse factorization");
-      reuse_iterations    = prm.get_integer("Reuse iterations");
-      reuse_tolerance     = prm.get_double("Reuse tolerance");
-      prm.leave_subsection();
+      // Every entry is bound by declare_parameters().
     }
 
     LinearSolver::LinearSolver()  = default;
@@ -123,9 +118,10 @@ namespace pneuma
               problem->SetOperator(
                 const_cast<Epetra_CrsMatrix *>(&A.trilinos_matrix()));
               Amesos factory;
-              direct.reset(factory.Create(direct_package.c_str(), *problem));
+              direct.reset(
+                factory.Create(direct_settings.package.c_str(), *problem));
               AssertThrow(direct != nullptr,
-                          ExcMessage("Amesos solver " + direct_package
+                          ExcMessage("Amesos solver " + direct_settings.package
                                      + " is not available"));
               // Failures are reported by the caller, not printed by Amesos.
               Teuchos::ParameterList amesos_parameters;
@@ -141,7 +137,7 @@ namespace pneuma
                                                              {"metis", 5},
                                                              {"qamd", 6},
                                                              {"auto", 7}};
-                  mumps->SetICNTL(7, icntl7.at(ordering));
+                  mumps->SetICNTL(7, icntl7.at(direct_settings.ordering));
                 }
               AssertThrow(direct->SymbolicFactorization() == 0,
                           ExcMessage("symbolic factorization failed"));
@@ -151,7 +147,7 @@ namespace pneuma
             }
           // The factors of an earlier tangent serve solve() until GMRES on
           // them needs too many iterations.
-          if (reuse_factorization && factorizations > 0)
+          if (direct_settings.reuse_factorization && factorizations > 0)
             {
               stale = true;
               return;
@@ -241,15 +237,16 @@ namespace pneuma
                   solver->direct_solve(dst, src);
                 }
               } preconditioner{this};
-              SolverControl control(reuse_iterations,
-                                    std::max(reuse_tolerance, forcing) *
-                                      b.l2_norm(),
+              SolverControl           control(direct_settings.reuse_iterations,
+                                    std::max(direct_settings.reuse_tolerance,
+                                             forcing)
+                                      * b.l2_norm(),
                                     false,
                                     false);
               SolverGMRES<LA::Vector> gmres(
                 control,
-                SolverGMRES<LA::Vector>::AdditionalData(reuse_iterations + 2,
-                                                        true));
+                SolverGMRES<LA::Vector>::AdditionalData(
+                  direct_settings.reuse_iterations + 2, true));
               x = 0.;
               try
                 {
@@ -268,8 +265,9 @@ namespace pneuma
         }
 
       Assert(amg, ExcMessage("factorize() first"));
-      SolverControl                                 control(max_iterations,
-                            std::max(relative_tolerance, forcing) * b.l2_norm(),
+      SolverControl control(amg_settings.max_iterations,
+                            std::max(amg_settings.relative_tolerance, forcing)
+                              * b.l2_norm(),
                             false,
                             false);
       TrilinosWrappers::SolverGMRES::AdditionalData gmres_data(false, 200);

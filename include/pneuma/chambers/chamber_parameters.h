@@ -19,7 +19,7 @@
 #include <deal.II/base/parsed_function.h>
 #include <deal.II/base/point.h>
 
-#include <pneuma/chambers/gas_law.h>
+#include <pneuma/chambers/gas_update.h>
 
 #include <memory>
 #include <string>
@@ -55,26 +55,39 @@ namespace pneuma
       volume
     };
 
-    /// One chamber as given in the input.
+    /**
+     * One chamber, "Chambers/Chamber k". The members bound to an entry
+     * (marked "entry") hold its default; the others are derived from the
+     * entries by ChamberParameters::parse_parameters().
+     */
     struct ChamberDefinition
     {
       /// "Chambers/Chamber k", for messages.
       std::string path;
       /// Material ids of the walls with their orientation (+1: the cell's
-      /// outward normal points out of the chamber, -1: into it).
+      /// outward normal points out of the chamber, -1: into it); from
+      /// "Regions".
       std::vector<std::pair<unsigned int, int>> regions;
       /// If set, walls are oriented by this interior point instead
-      /// (convex chambers).
-      bool     use_interior_point = false;
+      /// (convex chambers); from "Interior point".
+      bool     use_interior_point;
       Point<3> interior_point;
-      bool     open = false;
+      /// Entry "Open": a tank.
+      bool open = false;
 
-      Filling      filling      = Filling::gas;
-      unsigned int connected_to = 0; ///< 0-based chamber index
-      GasLaw       gas_law;
-      GasControl   control    = GasControl::pressure;
-      double       seal_time  = -1.;
-      double       density    = 1000.;
+      /// Entry "Filling".
+      Filling filling = Filling::gas;
+      /// The chamber whose filling this one shares (0-based; itself unless
+      /// connected); from "Connected to".
+      unsigned int connected_to;
+      /// Entries "Gas/Law", "Gas/Update" and the law's constants.
+      GasUpdate gas_law;
+      /// Entry "Gas/Control".
+      GasControl control = GasControl::pressure;
+      /// Entry "Gas/Seal time".
+      double seal_time = -1.;
+      /// Entry "Liquid/Density".
+      double                                        density = 1000.;
       std::unique_ptr<Functions::ParsedFunction<3>> pressure, amount, volume,
         liquid_volume;
 
@@ -91,22 +104,27 @@ namespace pneuma
     };
 
     /// The "Chambers" subsection.
-    struct ChamberParameters
+    class ChamberParameters
     {
+    public:
       static constexpr unsigned int max_chambers = 8;
 
-      /// "Chambers/Number of chambers" alone (it decides whether the subsystem exists).
+      /// "Chambers/Number of chambers" alone (it decides whether the
+      /// subsystem exists).
       static void
       declare_count(ParameterHandler &prm);
-      static void
+      /// Every other entry, for the chambers 1..N the layout names, bound
+      /// to this object (which must outlive the parsing of @p prm).
+      void
       declare_parameters(ParameterHandler &prm, const InputLayout &layout);
       void
       parse_parameters(ParameterHandler &prm);
 
-      /// Absolute ambient pressure [Pa].
+      /// Entry "Ambient pressure": absolute [Pa].
       double ambient_pressure = 101325.;
-      /// Gravitational acceleration acting on liquids [m/s^2].
-      Tensor<1, 3>                   gravity;
+      /// Entry "Gravity": the acceleration acting on liquids [m/s^2].
+      Tensor<1, 3> gravity = Tensor<1, 3>({0., 0., -9.81});
+      /// Chambers 1..N (declared by declare_parameters()).
       std::vector<ChamberDefinition> chambers;
 
       bool
@@ -114,6 +132,15 @@ namespace pneuma
       {
         return chambers.empty();
       }
+
+    private:
+      /// The entries of a chamber kept as text until they are checked.
+      struct Text
+      {
+        std::string  regions, interior_point;
+        unsigned int connected_to = 0;
+      };
+      std::vector<Text> text;
     };
   } // namespace chambers
 } // namespace pneuma

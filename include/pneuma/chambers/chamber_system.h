@@ -47,7 +47,7 @@ namespace pneuma
       double volume = 0., gas_volume = 0., liquid_volume = 0.;
       double level = 0., wetted_area = 0.;
       double gas_amount = 0.; ///< V_n: gas volume at ambient pressure
-      double pv_kappa   = 0.; ///< p_abs V_gas^kappa (the law's invariant)
+      double pv_kappa   = 0.; ///< the law's invariant, p_abs V_gas^kappa
     };
 
     class ChamberSystem
@@ -143,7 +143,7 @@ namespace pneuma
         double                    amount = 0.; ///< V_n when sealed
         bool                      sealed = false;
         bool                      empty  = false; ///< no liquid: h fixed
-        GasLaw::Reference         old;
+        GasState                  old; ///< last converged state
       };
 
       /// Sum member measures into group totals.

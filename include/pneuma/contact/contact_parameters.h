@@ -25,28 +25,37 @@ namespace pneuma
     /// Largest number of contact pairs a parameter file can declare.
     constexpr unsigned int max_pairs = 16;
 
-    /// One contact pair as given in the input.
+    /**
+     * One contact pair, "Contact/Pair k". The members bound to an entry
+     * (marked "entry") hold its default; the others are derived from the
+     * entries by ContactParameters::parse_parameters().
+     */
     struct ContactPair
     {
       /// "Contact/Pair k", for messages.
       std::string path;
-      /// Cable index (0-based) and the membrane regions of the master.
-      unsigned int                 cable = 0;
+      /// Cable index (0-based), from "Cable".
+      unsigned int cable;
+      /// The membrane regions of the master (empty: all), from "Membrane
+      /// regions".
       std::set<types::material_id> regions;
-      /// True: the cable is on the side the outward normal points to.
+      /// Entry "Side": true if the cable is on the side the outward normal
+      /// points to.
       bool outside = true;
-      /// Cable radius R in the gap [m] (0: the cable's larger semi-axis).
+      /// Entry "Radius": cable radius R in the gap [m] (0: the cable's
+      /// larger semi-axis).
       double radius = 0.;
-      /// Penalty eps_N [N/m^2]: line load per penetration.
+      /// Entry "Penalty": eps_N [N/m^2], line load per penetration.
       double penalty = 1e6;
-      /// Integration along each cable element.
-      bool         lobatto          = false;
+      /// Entries "Integration" (Gauss or Lobatto points) and "Points per
+      /// element", along each cable element.
+      bool         lobatto            = false;
       unsigned int points_per_element = 2;
-      /// Extra distance for the candidate search [m] (0: R + one cable
-      /// element length).
+      /// Entry "Search distance": extra distance for the candidate search
+      /// [m] (0: R + one cable element length).
       double search_distance = 0.;
-      /// Coulomb friction coefficient mu and tangential penalty eps_T
-      /// [N/m^2] (0: eps_N).
+      /// Entries "Friction coefficient" mu and "Tangential penalty" eps_T
+      /// [N/m^2]; a tangential penalty of 0 in the input is eps_N.
       double friction = 0., tangential_penalty = 0.;
     };
 
@@ -54,10 +63,13 @@ namespace pneuma
     class ContactParameters
     {
     public:
-      /// "Contact/Number of pairs" alone (it decides whether the subsystem exists).
+      /// "Contact/Number of pairs" alone (it decides whether the subsystem
+      /// exists).
       static void
       declare_count(ParameterHandler &prm);
-      static void
+      /// The pairs 1..N the layout names, bound to this object (which must
+      /// outlive the parsing of @p prm).
+      void
       declare_parameters(ParameterHandler &prm, const InputLayout &layout);
       /// @p n_cables: cables declared, to check the pair's cable.
       void
@@ -76,6 +88,13 @@ namespace pneuma
 
     private:
       std::vector<ContactPair> pairs;
+      /// The entries of a pair kept as given until they are checked.
+      struct Text
+      {
+        unsigned int cable = 1;
+        std::string  regions;
+      };
+      std::vector<Text> text;
     };
   } // namespace contact
 } // namespace pneuma

@@ -28,7 +28,9 @@ namespace pneuma
     class AdaptiveRefinement
     {
     public:
-      static void
+      /// Declare the entries, bound to this object (which must outlive the
+      /// parsing of @p prm).
+      void
       declare_parameters(ParameterHandler &prm);
       void
       parse_parameters(ParameterHandler &prm);
@@ -52,6 +54,7 @@ namespace pneuma
              parallel::distributed::Triangulation<2, 3> &triangulation) const;
 
     private:
+      /// Entries "Cycles", "Refine fraction", "Coarsen fraction".
       unsigned int n_cycles         = 0;
       double       refine_fraction  = 0.3;
       double       coarsen_fraction = 0.;

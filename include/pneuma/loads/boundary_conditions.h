@@ -35,7 +35,9 @@ namespace pneuma
     public:
       BoundaryConditions();
 
-      static void
+      /// Declare the entries, bound to this object (which must outlive the
+      /// parsing of @p prm).
+      void
       declare_parameters(ParameterHandler &prm);
       void
       parse_parameters(ParameterHandler &prm);
@@ -82,6 +84,15 @@ namespace pneuma
                       const DoFHandler<2, 3> &dof_handler,
                       const double            t) const;
 
+      /// The entries as given: "Fixed boundaries", "Fixed points", "Fixed
+      /// regions", "Prescribed displacement boundaries" and "Prescribed
+      /// displacement regions" (all empty by default).
+      struct Text
+      {
+        std::string fixed_boundaries, fixed_points, fixed_regions,
+          displaced_boundaries, displaced_regions;
+      } text;
+      /// What they hold.
       std::map<types::boundary_id, std::array<bool, 3>>     fixed_boundaries;
       std::vector<std::pair<Point<3>, std::array<bool, 3>>> fixed_points;
       std::set<types::material_id>                          fixed_regions;

@@ -33,7 +33,9 @@ namespace pneuma
     public:
       Loads();
 
-      static void
+      /// Declare the entries, bound to this object (which must outlive the
+      /// parsing of @p prm).
+      void
       declare_parameters(ParameterHandler &prm);
       void
       parse_parameters(ParameterHandler &prm);
@@ -80,8 +82,12 @@ namespace pneuma
       std::unique_ptr<Functions::ParsedFunction<3>> gravity_function;
       std::unique_ptr<Functions::ParsedFunction<3>> surface_function;
       std::unique_ptr<Functions::ParsedFunction<3>> line_function;
-      std::set<types::material_id>                  pressure_ids;
-      std::set<types::boundary_id>                  line_load_ids;
+      /// Entries "Pressure regions" and "Line load boundaries" as given,
+      /// and the ids parsed from them.
+      std::string                  pressure_regions_text, line_load_text;
+      std::set<types::material_id> pressure_ids;
+      std::set<types::boundary_id> line_load_ids;
+      /// Entries "Gravity" and "Surface load".
       bool gravity_on = false, surface_load_on = false;
     };
 

@@ -34,7 +34,9 @@ namespace pneuma
     class RigidRegions
     {
     public:
-      static void
+      /// Declare the entry, bound to this object (which must outlive the
+      /// parsing of @p prm).
+      void
       declare_parameters(ParameterHandler &prm);
       void
       parse_parameters(ParameterHandler &prm);
@@ -96,6 +98,8 @@ namespace pneuma
         std::array<Point<3>, 3>                masters;
         std::array<types::global_dof_index, 9> master_dofs;
       };
+      /// Entry "Rigid regions" as given (empty by default).
+      std::string                               text;
       std::vector<std::set<types::material_id>> region_ids;
       std::vector<Plate>                        plates;
       mutable std::set<types::global_dof_index> slaves;

@@ -4,7 +4,10 @@
  * @file
  * The linear solver of each Newton step: a parallel direct solver (MUMPS
  * through Trilinos Amesos, the default) or AMG-preconditioned GMRES
- * (Trilinos ML) for large meshes.
+ * (Trilinos ML) for large meshes (doc/theory.md "Linear solver").
+ * "Linear solver/Type" selects it; each type's entries are in the
+ * subsection of its name, "Linear solver/direct/..." and
+ * "Linear solver/amg/...".
  *
  * The direct solver can reuse a factorization across Newton iterations
  * (off by default): near convergence the tangent barely changes, and a few
@@ -36,7 +39,9 @@ namespace pneuma
     class LinearSolver
     {
     public:
-      static void
+      /// Declare the entries, bound to this object (which must outlive
+      /// the parsing of @p prm).
+      void
       declare_parameters(ParameterHandler &prm);
       void
       parse_parameters(ParameterHandler &prm);
@@ -80,7 +85,7 @@ namespace pneuma
       /**
        * Relative tolerance that the next solves on an earlier
        * factorization must reach (an inexact Newton forcing term); never
-       * below "Reuse tolerance".
+       * below "direct/Reuse tolerance" or "amg/Relative tolerance".
        */
       void
       set_forcing(const double eta)
@@ -111,32 +116,49 @@ namespace pneuma
       }
 
     private:
-      std::string                    solver_type, direct_package;
-      double                         relative_tolerance = 1e-10;
-      unsigned int                   max_iterations     = 1000;
-      std::vector<std::vector<bool>> constant_modes;
+      /// Entry "Type": "direct" or "amg".
+      std::string solver_type = "direct";
+      /// The entries of "Linear solver/direct".
+      struct DirectSettings
+      {
+        /// "Package": the Amesos solver.
+        std::string package = "Amesos_Mumps";
+        /// "Ordering": MUMPS's fill-reducing ordering, ICNTL(7).
+        std::string ordering = "amf";
+        /// "Reuse factorization", "Reuse iterations", "Reuse tolerance":
+        /// factorize() keeps the numeric factors of an earlier tangent and
+        /// solve() runs GMRES on the current one, preconditioned by them;
+        /// when GMRES needs more than reuse_iterations the tangent has
+        /// moved too far and is factorized afresh.
+        bool         reuse_factorization = false;
+        unsigned int reuse_iterations    = 8;
+        double       reuse_tolerance     = 1e-9;
+      } direct_settings;
+      /// The entries of "Linear solver/amg": GMRES's relative tolerance
+      /// and iteration limit.
+      struct AmgSettings
+      {
+        double       relative_tolerance = 1e-10;
+        unsigned int max_iterations     = 2000;
+      } amg_settings;
+
+      std::vector<std::vector<bool>>   constant_modes;
       std::vector<std::vector<double>> rigid_body_modes;
       /// Contiguous storage of rigid_body_modes handed to ML (it keeps the
       /// pointer while the preconditioner lives).
       std::vector<double> null_space;
-      std::string                    ordering;
       // Direct solver state: the symbolic factorization (fill-reducing
       // ordering) is computed once per matrix and reused by every Newton
       // iteration; only the numeric factorization is redone.
       std::unique_ptr<Epetra_LinearProblem> problem;
       std::unique_ptr<Amesos_BaseSolver>    direct;
       const void                           *factored_matrix = nullptr;
-      // Factorization reuse: factorize() keeps the numeric factors of an
-      // earlier tangent and solve() runs GMRES on the current one,
-      // preconditioned by them; when GMRES needs more than reuse_iterations
-      // the tangent has moved too far and is factorized afresh.
-      bool         reuse_factorization = false;
-      unsigned int reuse_iterations    = 8;
-      double       reuse_tolerance     = 1e-9;
-      double       forcing             = 0.;
-      bool         stale               = false;
-      unsigned int factorizations      = 0;
-      unsigned int krylov_iterations   = 0;
+      /// The forcing term of set_forcing().
+      double forcing = 0.;
+      /// True while the factors are those of an earlier tangent (reuse).
+      bool         stale             = false;
+      unsigned int factorizations    = 0;
+      unsigned int krylov_iterations = 0;
 
       /// Numeric factorization of the matrix bound to the Amesos problem.
       void
