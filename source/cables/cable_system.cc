@@ -5,7 +5,7 @@
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/numerics/data_out.h>
 
-#include <pneuma/cables/cable_element.h>
+#include <pneuma/cables/tension_only_cable.h>
 #include <pneuma/cables/cable_geometry.h>
 #include <pneuma/cables/cable_system.h>
 #include <pneuma/cables/solid_beam_element.h>

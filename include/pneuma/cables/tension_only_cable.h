@@ -2,8 +2,9 @@
 
 /**
  * @file
- * The tension-only cable (truss) at one point of the mid-line
- * (doc/theory.md §8.1).
+ * The kernel of the tension-only cable (truss) at one point of the mid-line
+ * (doc/theory.md §8.1); the element "cable" (elements/cable.cc) chains it
+ * with the shape functions.
  *
  * With S the reference arc length, x' = dx/dS the current tangent and
  * rho = L_ref / L_0 the ratio of reference to unstressed length (rho > 1
