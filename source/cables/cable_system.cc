@@ -9,6 +9,7 @@
 #include <pneuma/cables/cable_geometry.h>
 #include <pneuma/cables/cable_system.h>
 #include <pneuma/cables/solid_beam_element.h>
+#include <pneuma/cables/solid_beam_section.h>
 #include <pneuma/core/input_error.h>
 
 #include <fstream>
@@ -195,7 +196,12 @@ namespace pneuma
           else if (d.unstressed_length > 0.)
             b->rho = b->reference_length / d.unstressed_length;
           if (beam)
-            b->beam = std::make_unique<SolidBeamElement>(d, b->rho);
+            b->beam = std::make_unique<SolidBeamElement>(
+              BeamMaterial{d.neo_hookean ? BeamLaw::neo_hookean :
+                                           BeamLaw::saint_venant_kirchhoff,
+                           d.youngs_modulus,
+                           d.poisson_ratio},
+              b->rho);
           else
             b->cable =
               std::make_unique<TensionOnlyCable>(EA, b->rho, d.slack_ratio);
