@@ -39,7 +39,7 @@ main(int argc, char **argv)
      {"Chambers/Chamber 1/Gas/Seal time", "1"},
      {"Chambers/Chamber 1/Gas/Pressure/Function expression", "1e5*min(t, 1)"},
      {"Cables/Number of cables", "1"},
-     {"Cables/Cable 1/Points", "1.03, -0.6, 0.241; 1.03, 0.6, 0.241"},
+     {"Cables/Cable 1/polyline/Points", "1.03, -0.6, 0.241; 1.03, 0.6, 0.241"},
      {"Cables/Cable 1/Number of elements", "48"},
      {"Cables/Cable 1/Section semi-axes", "0.01"},
      {"Cables/Cable 1/Prestress force", "500"},

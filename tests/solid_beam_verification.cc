@@ -32,13 +32,13 @@ namespace
     return {{"Geometry/Type", "none"},
             {"Cables/Number of cables", "1"},
             {"Cables/Cable 1/Element", "solid beam"},
-            {"Cables/Cable 1/Points", "0, 0, 0; 1, 0, 0"},
+            {"Cables/Cable 1/polyline/Points", "0, 0, 0; 1, 0, 0"},
             {"Cables/Cable 1/Number of elements", std::to_string(n)},
             {"Cables/Cable 1/Section semi-axes",
              std::to_string(a) + ", " + std::to_string(b)},
-            {"Cables/Cable 1/Section axis", "0, 0, 1"},
+            {"Cables/Cable 1/solid beam/Section axis", "0, 0, 1"},
             {"Cables/Cable 1/Young's modulus", "2e11"},
-            {"Cables/Cable 1/Poisson's ratio", std::to_string(nu)},
+            {"Cables/Cable 1/solid beam/Poisson's ratio", std::to_string(nu)},
             {"Cables/Cable 1/Start support", "fixed"},
            };
   }

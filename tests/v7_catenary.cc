@@ -76,7 +76,7 @@ namespace
       {"Geometry/Type", "none"},
       {"Cables/Number of cables", "1"},
       {"Cables/Cable 1/Shape", "polyline"},
-      {"Cables/Cable 1/Points", points},
+      {"Cables/Cable 1/polyline/Points", points},
       {"Cables/Cable 1/Number of elements", std::to_string(n_elements)},
       {"Cables/Cable 1/Section semi-axes", "0.005"},
       {"Cables/Cable 1/Young's modulus", std::to_string(EA / area)},

@@ -51,7 +51,7 @@ for n in 16 32 64 128 256; do
   read -r wall mb < <(measure "$root/parameter_files/catenary.prm" \
     --set "Cables/Cable 1/Number of elements=$n" \
     --set "Cables/Cable 1/Element=solid beam" \
-    --set "Cables/Cable 1/Poisson's ratio=0" \
+    --set "Cables/Cable 1/solid beam/Poisson's ratio=0" \
     --set "Cables/Cable 1/Section semi-axes=5e-5" \
     --set "Cables/Cable 1/Young's modulus=$E_beam" \
     --set "Cables/Cable 1/Start support=pinned" \

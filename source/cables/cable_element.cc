@@ -1,4 +1,4 @@
-#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/exceptions.h>
 
 #include <pneuma/cables/cable_element.h>
 
@@ -6,29 +6,33 @@ namespace pneuma
 {
   namespace cables
   {
-    TensionOnlyCable::TensionOnlyCable(const double axial_stiffness,
-                                       const double length_ratio,
-                                       const double slack_ratio)
-      : EA(axial_stiffness)
-      , rho(length_ratio)
-      , slack(slack_ratio)
+    void
+    CableElement::reference_values(const CableNode &, ArrayView<double>) const
     {
     }
 
-    CablePoint
-    TensionOnlyCable::evaluate(const Tensor<1, 3> &dx_dS) const
+    void
+    CableElement::end_moment_terms(const Tensor<1, 3> &,
+                                   const Vector<double> &,
+                                   const Vector<double> &,
+                                   FullMatrix<double> *,
+                                   Vector<double> *) const
     {
-      CablePoint         p;
-      const double       l = dx_dS.norm();
-      const Tensor<1, 3> e = dx_dS / l;
-      p.stretch            = rho * l;
-      const double EA_eff  = p.stretch >= 1. ? EA : slack * EA;
-      p.force              = EA_eff * (p.stretch - 1.);
-      p.force_vector       = p.force * e;
-      const Tensor<2, 3> ee = outer_product(e, e);
-      p.tangent = EA_eff * rho * ee +
-                  (p.force / l) * (Tensor<2, 3>(unit_symmetric_tensor<3>()) - ee);
-      return p;
+      // CableParameters rejects an End moment on such an element.
+      AssertThrow(carries_moments(),
+                  ExcMessage("this cable element carries no moment"));
+      AssertThrow(false, ExcNotImplemented());
+    }
+
+    double
+    CableElement::commit_end_moment(const Tensor<1, 3> &,
+                                    const Vector<double> &,
+                                    const Vector<double> &)
+    {
+      AssertThrow(carries_moments(),
+                  ExcMessage("this cable element carries no moment"));
+      AssertThrow(false, ExcNotImplemented());
+      return 0.;
     }
   } // namespace cables
 } // namespace pneuma

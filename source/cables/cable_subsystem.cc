@@ -31,7 +31,7 @@ namespace pneuma
     CableSubsystem::declare_parameters(ParameterHandler  &prm,
                                        const InputLayout &layout)
     {
-      CableParameters::declare_parameters(prm, layout);
+      parameters.declare_parameters(prm, layout);
     }
 
     void

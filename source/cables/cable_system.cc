@@ -6,11 +6,11 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <pneuma/cables/cable_element.h>
-#include <pneuma/cables/cable_geometry.h>
+#include <pneuma/cables/cable_shape.h>
 #include <pneuma/cables/cable_system.h>
-#include <pneuma/cables/solid_beam_element.h>
 #include <pneuma/core/input_error.h>
 
+#include <algorithm>
 #include <fstream>
 #include <limits>
 
@@ -22,11 +22,14 @@ namespace pneuma
     {
       explicit Body(const CableDefinition &d)
         : definition(d)
+        , element(*d.element)
         , dof_handler(tria)
       {
       }
 
-      const CableDefinition          &definition;
+      const CableDefinition &definition;
+      /// The cable's element (prepared by setup()).
+      CableElement                   &element;
       Triangulation<1, 3>             tria;
       std::unique_ptr<FESystem<1, 3>> fe;
       DoFHandler<1, 3>                dof_handler;
@@ -34,18 +37,15 @@ namespace pneuma
       /// Global index of local dof 0.
       types::global_dof_index offset = 0;
       /// Reference values of every local dof: position (components 0-2),
-      /// semi-axis vectors A1, A2 (3-5, 6-8).
+      /// then the element's own (the solid beam's semi-axis vectors A1, A2).
       Vector<double> reference;
       /// Reference length / unstressed length.
       double rho = 1., reference_length = 0.;
       /// Local dofs of the start, end and middle node (all components).
       std::vector<types::global_dof_index> start_dofs, end_dofs, mid_dofs;
       Point<3>                             start_point, end_point;
-      std::unique_ptr<TensionOnlyCable>    cable;
-      std::unique_ptr<SolidBeamElement>    beam;
-      /// Reused for every cell: one Gauss point for the element terms
-      /// (exact for the constant strain of the cable, reduced for the
-      /// solid beam), two for the loads.
+      /// Reused for every cell: the element's quadrature for its terms,
+      /// two Gauss points for the loads.
       std::unique_ptr<FEValues<1, 3>> element_values, load_values;
       /// The end moment at the current time (zero without one).
       Tensor<1, 3>
@@ -57,25 +57,23 @@ namespace pneuma
             M[c] = definition.end_moment->value(end_point, c);
         return M;
       }
-      /// Reference (A) and current (a) semi-axis vectors of the end section.
+      /// The end node's reference values and unknowns (all components).
       void
-      end_section(const Vector<double>        &local_u,
-                  std::array<Tensor<1, 3>, 2> &A,
-                  std::array<Tensor<1, 3>, 2> &a) const
+      end_node(const Vector<double> &local_u,
+               Vector<double>       &node_reference,
+               Vector<double>       &node_u) const
       {
-        for (unsigned int k = 0; k < 2; ++k)
-          for (unsigned int c = 0; c < 3; ++c)
-            {
-              const auto i = end_dofs[3 + 3 * k + c];
-              A[k][c]      = reference[i];
-              a[k][c]      = A[k][c] + local_u[i];
-            }
+        node_reference.reinit(n_components);
+        node_u.reinit(n_components);
+        for (unsigned int c = 0; c < n_components; ++c)
+          {
+            node_reference[c] = reference[end_dofs[c]];
+            node_u[c]         = local_u[end_dofs[c]];
+          }
       }
-      /// End-moment tracking: the end semi-axis vectors and their angles
-      /// about the moment axis at the last converged step.
-      std::array<Tensor<1, 3>, 2> moment_axes;
-      std::array<double, 2>       moment_angles{{0., 0.}};
-      double                      section_rotation = 0.;
+      /// With an end moment: the rotation of the end section since the
+      /// start, at the last converged step.
+      double section_rotation = 0.;
     };
 
     namespace
@@ -114,7 +112,7 @@ namespace pneuma
       v.offset      = b.offset;
       v.reference   = &b.reference;
       v.radius      = std::max(b.definition.section_a, b.definition.section_b);
-      v.solid_beam  = static_cast<bool>(b.beam);
+      v.section_vectors = b.element.has_section_vectors();
       return v;
     }
 
@@ -164,16 +162,16 @@ namespace pneuma
         {
           const CableDefinition &d = parameters[k];
           auto                   b = std::make_unique<Body>(d);
-          create_cable_mesh(d, b->tria);
-          const bool beam = d.element == CableElement::solid_beam;
-          b->n_components = beam ? 9 : 3;
+          d.shape->create_mesh(d.n_elements, b->tria);
+          CableElement &element = b->element;
+          b->n_components       = element.n_components();
           b->fe =
             std::make_unique<FESystem<1, 3>>(FE_Q<1, 3>(1), b->n_components);
           b->dof_handler.distribute_dofs(*b->fe);
           b->element_values =
             std::make_unique<FEValues<1, 3>>(mapping(),
                                              *b->fe,
-                                             QGauss<1>(1),
+                                             element.quadrature(),
                                              update_values | update_gradients
                                                | update_JxW_values);
           b->load_values =
@@ -194,11 +192,7 @@ namespace pneuma
             b->rho = 1. + d.prestress_force / EA;
           else if (d.unstressed_length > 0.)
             b->rho = b->reference_length / d.unstressed_length;
-          if (beam)
-            b->beam = std::make_unique<SolidBeamElement>(d, b->rho);
-          else
-            b->cable =
-              std::make_unique<TensionOnlyCable>(EA, b->rho, d.slack_ratio);
+          element.setup(d, b->rho);
 
           // Node tangents (mean of the adjacent cells) for the sections.
           const unsigned int        n_v = b->tria.n_vertices();
@@ -210,37 +204,23 @@ namespace pneuma
                 node_tangent[cell->vertex_index(v)] += cell_tangent(cell);
                 ++n_adjacent[cell->vertex_index(v)];
               }
+          // Reference values: the positions, and the element's own.
           b->reference.reinit(b->dof_handler.n_dofs());
+          std::vector<double> values(b->n_components);
           for (const auto &cell : b->dof_handler.active_cell_iterators())
             for (unsigned int v = 0; v < 2; ++v)
               {
-                const Point<3> X = cell->vertex(v);
+                CableNode node;
+                node.position = cell->vertex(v);
+                node.tangent  = node_tangent[cell->vertex_index(v)];
+                node.tangent /= node.tangent.norm();
+                node.section_direction =
+                  d.shape->section_direction(node.position);
                 for (unsigned int c = 0; c < 3; ++c)
-                  b->reference[cell->vertex_dof_index(v, c)] = X[c];
-                if (!beam)
-                  continue;
-                Tensor<1, 3> t = node_tangent[cell->vertex_index(v)];
-                t /= t.norm();
-                Tensor<1, 3> e1 = d.section_axis;
-                if (d.shape == CableShape::ring || d.shape == CableShape::helix)
-                  {
-                    const Tensor<1, 3> a = d.axis / d.axis.norm();
-                    e1                   = X - d.centre;
-                    e1 -= (e1 * a) * a;
-                  }
-                e1 -= (e1 * t) * t;
-                check_input(e1.norm() > 1e-8,
-                            d.path + "/Section axis",
-                            "is parallel to the cable at a node");
-                e1 /= e1.norm();
-                const Tensor<1, 3> e2 = cross_product_3d(t, e1);
-                for (unsigned int c = 0; c < 3; ++c)
-                  {
-                    b->reference[cell->vertex_dof_index(v, 3 + c)] =
-                      d.section_a * e1[c];
-                    b->reference[cell->vertex_dof_index(v, 6 + c)] =
-                      d.section_b * e2[c];
-                  }
+                  values[c] = node.position[c];
+                element.reference_values(node, make_array_view(values));
+                for (unsigned int c = 0; c < b->n_components; ++c)
+                  b->reference[cell->vertex_dof_index(v, c)] = values[c];
               }
 
           // Ends: the boundary vertices; the start is the one nearest to the
@@ -395,10 +375,10 @@ namespace pneuma
                             const DoFHandler<1, 3>::active_cell_iterator &cell,
                             const double                                  t,
                             const Vector<double>                         &u,
-                            FullMatrix<double>  *cell_matrix,
-                            Vector<double>      *cell_residual,
-                            Vector<double>      *cell_external,
-                            std::vector<double> *cell_output) const
+                            FullMatrix<double> *cell_matrix,
+                            Vector<double>     *cell_residual,
+                            Vector<double>     *cell_external,
+                            CableCellOutput    *cell_output) const
     {
       const CableDefinition               &d  = b.definition;
       const FiniteElement<1, 3>           &fe = *b.fe;
@@ -413,53 +393,16 @@ namespace pneuma
         }
       const Tensor<1, 3> tangent = cell_tangent(cell);
 
-      // Internal forces.
+      // Internal forces: the element's.
       FEValues<1, 3> &fe_values = *b.element_values;
       fe_values.reinit(cell);
-      if (b.beam)
-        {
-          b.beam->cell_terms(fe_values,
-                             tangent,
-                             local_ref,
-                             local_u,
-                             cell_matrix,
-                             cell_residual,
-                             cell_output);
-        }
-      else
-        {
-          // Constant strain on a linear element: one point is exact.
-          for (const unsigned int q : fe_values.quadrature_point_indices())
-            {
-              std::vector<double> g(n);
-              Tensor<1, 3>        dx;
-              for (unsigned int i = 0; i < n; ++i)
-                {
-                  g[i] = fe_values.shape_grad(i, q) * tangent;
-                  dx[fe.system_to_component_index(i).first] +=
-                    (local_ref[i] + local_u[i]) * g[i];
-                }
-              const CablePoint p   = b.cable->evaluate(dx);
-              const double     JxW = fe_values.JxW(q);
-              for (unsigned int i = 0; i < n; ++i)
-                {
-                  const unsigned int ci = fe.system_to_component_index(i).first;
-                  if (cell_residual)
-                    (*cell_residual)(i) += p.force_vector[ci] * g[i] * JxW;
-                  if (cell_matrix)
-                    for (unsigned int j = 0; j < n; ++j)
-                      (*cell_matrix)(i, j) +=
-                        g[i]
-                        * p.tangent[ci][fe.system_to_component_index(j).first]
-                        * g[j] * JxW;
-                }
-              if (cell_output)
-                {
-                  (*cell_output)[0] = p.force;
-                  (*cell_output)[1] = p.stretch;
-                }
-            }
-        }
+      b.element.cell_terms(fe_values,
+                           tangent,
+                           local_ref,
+                           local_u,
+                           cell_matrix,
+                           cell_residual,
+                           cell_output);
 
       // Dead loads per unstressed length: gravity on density * area, and the
       // distributed load. Mid-line dofs only.
@@ -576,20 +519,15 @@ namespace pneuma
             const Tensor<1, 3> M = b->end_moment();
             if (M.norm() > 0.)
               {
-                std::array<Tensor<1, 3>, 2> A, a;
-                b->end_section(local_u, A, a);
-                FullMatrix<double> node_matrix(9, 9);
-                Vector<double>     node_residual(9), node_external(9);
-                SolidBeamElement::end_moment_terms(M,
-                                                   A,
-                                                   a,
-                                                   b->moment_axes,
-                                                   b->moment_angles,
-                                                   &node_matrix,
-                                                   &node_residual,
-                                                   nullptr);
-                std::vector<types::global_dof_index> mdofs(9);
-                for (unsigned int c = 0; c < 9; ++c)
+                const unsigned int nc = b->n_components;
+                Vector<double>     node_reference, node_u;
+                b->end_node(local_u, node_reference, node_u);
+                FullMatrix<double> node_matrix(nc, nc);
+                Vector<double>     node_residual(nc), node_external(nc);
+                b->element.end_moment_terms(
+                  M, node_reference, node_u, &node_matrix, &node_residual);
+                std::vector<types::global_dof_index> mdofs(nc);
+                for (unsigned int c = 0; c < nc; ++c)
                   mdofs[c] = b->offset + b->end_dofs[c];
                 LA::distribute(constraints,
                                node_matrix,
@@ -678,20 +616,10 @@ namespace pneuma
           const Tensor<1, 3> M = b->end_moment();
           if (M.norm() == 0.)
             continue;
-          std::array<Tensor<1, 3>, 2> A, a;
-          b->end_section(extract(*b, u), A, a);
-          std::array<double, 2> theta{{0., 0.}};
-          SolidBeamElement::end_moment_terms(M,
-                                             A,
-                                             a,
-                                             b->moment_axes,
-                                             b->moment_angles,
-                                             nullptr,
-                                             nullptr,
-                                             &theta);
-          b->moment_axes      = a;
-          b->moment_angles    = theta;
-          b->section_rotation = SolidBeamElement::section_rotation(M, A, theta);
+          Vector<double> node_reference, node_u;
+          b->end_node(extract(*b, u), node_reference, node_u);
+          b->section_rotation =
+            b->element.commit_end_moment(M, node_reference, node_u);
         }
     }
 
@@ -708,7 +636,7 @@ namespace pneuma
           const unsigned int                   n = b->fe->n_dofs_per_cell();
           Vector<double>                       nodal(b->dof_handler.n_dofs());
           Vector<double>                       cell_residual(n);
-          std::vector<double>                  out(b->beam ? 6 : 2, 0.);
+          CableCellOutput                      out;
           std::vector<types::global_dof_index> dofs(n);
           r.max_force = -std::numeric_limits<double>::max();
           r.min_force = std::numeric_limits<double>::max();
@@ -720,14 +648,10 @@ namespace pneuma
               cell->get_dof_indices(dofs);
               for (unsigned int i = 0; i < n; ++i)
                 nodal[dofs[i]] += cell_residual[i];
-              r.max_force = std::max(r.max_force, out[0]);
-              r.min_force = std::min(r.min_force, out[0]);
-              if (b->beam)
-                {
-                  r.max_bending =
-                    std::max(r.max_bending, std::hypot(out[1], out[2]));
-                  r.max_torsion = std::max(r.max_torsion, std::abs(out[3]));
-                }
+              r.max_force   = std::max(r.max_force, out.axial_force);
+              r.min_force   = std::min(r.min_force, out.axial_force);
+              r.max_bending = std::max(r.max_bending, out.bending_moment);
+              r.max_torsion = std::max(r.max_torsion, out.torsion_moment);
               Tensor<1, 3> chord;
               for (unsigned int c = 0; c < 3; ++c)
                 chord[c] = cell->vertex(1)[c] - cell->vertex(0)[c]
@@ -778,30 +702,26 @@ namespace pneuma
         {
           const Body          &b       = *bodies[k];
           const Vector<double> local_u = extract(b, u);
-          // Displacement of the mid-line, and the section changes.
-          std::vector<std::string> names(3, "displacement");
+          // The element's nodal fields (the mid-line displacement first);
+          // equal names of consecutive components form a vector.
+          const std::vector<std::string> names = b.element.component_names();
           std::vector<DataComponentInterpretation::DataComponentInterpretation>
-            interpretation(
-              3, DataComponentInterpretation::component_is_part_of_vector);
-          for (unsigned int c = 3; c < b.n_components; ++c)
-            {
-              names.push_back(c < 6 ? "section_axis_1_change"
-                                    : "section_axis_2_change");
-              interpretation.push_back(
-                DataComponentInterpretation::component_is_part_of_vector);
-            }
-          const std::vector<std::string> field_names =
-            b.beam ? SolidBeamElement::output_names()
-                   : std::vector<std::string>{"axial_force", "stretch"};
-          std::vector<Vector<double>> fields(
+            interpretation;
+          for (const auto &name : names)
+            interpretation.push_back(
+              std::count(names.begin(), names.end(), name) > 1
+                ? DataComponentInterpretation::component_is_part_of_vector
+                : DataComponentInterpretation::component_is_scalar);
+          const std::vector<std::string> field_names = b.element.output_names();
+          std::vector<Vector<double>>    fields(
             field_names.size(), Vector<double>(b.tria.n_active_cells()));
-          std::vector<double> out(field_names.size(), 0.);
-          unsigned int        index = 0;
+          CableCellOutput out;
+          unsigned int    index = 0;
           for (const auto &cell : b.dof_handler.active_cell_iterators())
             {
               cell_terms(b, cell, t, local_u, nullptr, nullptr, nullptr, &out);
               for (unsigned int f = 0; f < fields.size(); ++f)
-                fields[f][index] = out[f];
+                fields[f][index] = out.values[f];
               ++index;
             }
           DataOut<1, 3> data_out;

@@ -7,13 +7,9 @@ namespace pneuma
 {
   namespace cables
   {
-    SolidBeamElement::SolidBeamElement(const CableDefinition &cable,
-                                       const double           length_ratio)
-      : section(std::make_unique<SolidBeamSection>(
-          BeamMaterial{cable.neo_hookean ? BeamLaw::neo_hookean :
-                                           BeamLaw::saint_venant_kirchhoff,
-                       cable.youngs_modulus,
-                       cable.poisson_ratio}))
+    SolidBeamElement::SolidBeamElement(const BeamMaterial &material,
+                                       const double        length_ratio)
+      : section(std::make_unique<SolidBeamSection>(material))
       , rho(length_ratio)
     {
     }

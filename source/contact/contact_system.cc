@@ -102,7 +102,7 @@ namespace pneuma
             p.lobatto ? static_cast<const Quadrature<1> &>(lobatto) : gauss;
           unsigned int index = 0;
           double       h_max = 0.;
-          d.beam             = v.solid_beam && p.radius == 0.;
+          d.beam             = v.section_vectors && p.radius == 0.;
           for (const auto &cell : v.dof_handler->active_cell_iterators())
             {
               std::vector<types::global_dof_index> dofs(d.beam ? 18 : 6);

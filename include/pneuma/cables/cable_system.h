@@ -12,10 +12,14 @@
  * cable dofs and assembles the cable block; later couplings (contact) add
  * off-diagonal blocks to the same matrix.
  *
- * Unknowns per node: the displacement of the mid-line (cable element, 3),
- * or the displacement of the mid-line and the changes of the two section
- * semi-axis vectors (solid-beam, 9). A scene without cables has no cable
- * unknowns and does no cable work.
+ * Unknowns per node: those of the cable's element (cable_element.h), the
+ * displacement of the mid-line first (the cable element: 3; the solid
+ * beam: 9, with the changes of the two section semi-axis vectors). The
+ * cable system builds each mesh from the cable's shape (cable_shape.h),
+ * holds the supports and applies the dead loads on the mid-line, and asks
+ * the element for the cell terms; it does not know which element a cable
+ * uses. A scene without cables has no cable unknowns and does no cable
+ * work.
  */
 
 #include <deal.II/base/index_set.h>
@@ -40,8 +44,6 @@ namespace pneuma
 {
   namespace cables
   {
-    class SolidBeamElement;
-
     /// What a cable reports after a converged step.
     struct CableReport
     {
@@ -55,10 +57,11 @@ namespace pneuma
       /// Displacement of the start, end, and middle node [m].
       std::array<double, 3> start_displacement{{0., 0., 0.}},
         end_displacement{{0., 0., 0.}}, mid_displacement{{0., 0., 0.}};
-      /// Solid-beam only: largest bending and torsion moments [N m].
+      /// Largest bending and torsion moments [N m] (zero for an element
+      /// without moments).
       double max_bending = 0., max_torsion = 0.;
-      /// Solid-beam with an end moment: rotation of the end section about
-      /// the moment axis since the start [rad].
+      /// With an end moment: rotation of the end section about the moment
+      /// axis since the start [rad].
       double end_rotation = 0.;
     };
 
@@ -72,8 +75,9 @@ namespace pneuma
       const Vector<double> *reference = nullptr;
       /// Larger semi-axis of the section [m].
       double radius = 0.;
-      /// True for a solid beam (components 3-8: section semi-axis vectors).
-      bool solid_beam = false;
+      /// True if components 3-5 and 6-8 are the changes of the section
+      /// semi-axis vectors (CableElement::has_section_vectors()).
+      bool section_vectors = false;
     };
 
     /// The cable block of the global system.
@@ -152,12 +156,12 @@ namespace pneuma
                               LA::SparseMatrix                &matrix) const;
 
       /// For the AMG near-null space: the displacement component (0..2) of
-      /// owned cable dof @p i, or -1 (solid-beam section unknowns).
+      /// owned cable dof @p i, or -1 (an element's further unknowns).
       int
       translation_component(const types::global_dof_index i) const;
 
       /// Accept the converged state @p u (tracks the end-section rotation
-      /// of a solid beam loaded by a moment).
+      /// of a cable loaded by an end moment).
       void
       commit_step(const LA::Vector &u);
 
@@ -177,26 +181,25 @@ namespace pneuma
 
       /// Per-cell element terms in the local numbering of body @p b.
       void
-      cell_terms(const Body                                  &b,
+      cell_terms(const Body                                   &b,
                  const DoFHandler<1, 3>::active_cell_iterator &cell,
-                 const double                                 t,
-                 const Vector<double>                        &local_u,
-                 FullMatrix<double>                          *cell_matrix,
-                 Vector<double>                              *cell_residual,
-                 Vector<double>                              *cell_external,
-                 std::vector<double>                         *cell_output)
-        const;
+                 const double                                  t,
+                 const Vector<double>                         &local_u,
+                 FullMatrix<double>                           *cell_matrix,
+                 Vector<double>                               *cell_residual,
+                 Vector<double>                               *cell_external,
+                 CableCellOutput *cell_output) const;
 
       /// The body's dofs of @p u (replicated local copy).
       Vector<double>
       extract(const Body &b, const LA::Vector &u) const;
 
-      const CableParameters                &parameters;
-      const loads::Loads                   &loads;
-      MPI_Comm                              comm = MPI_COMM_SELF;
-      bool                                  is_owner = true;
-      std::vector<std::unique_ptr<Body>>    bodies;
-      types::global_dof_index               first = 0, n_cable_dofs = 0;
+      const CableParameters                      &parameters;
+      const loads::Loads                         &loads;
+      MPI_Comm                                    comm     = MPI_COMM_SELF;
+      bool                                        is_owner = true;
+      std::vector<std::unique_ptr<Body>>          bodies;
+      types::global_dof_index                     first = 0, n_cable_dofs = 0;
       std::vector<std::pair<double, std::string>> pvd_records;
       std::vector<std::vector<std::pair<std::string, Vector<double>>>>
         extra_fields;

@@ -19,8 +19,6 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <pneuma/cables/cable_parameters.h>
-
 #include <array>
 #include <memory>
 #include <string>
@@ -30,14 +28,18 @@ namespace pneuma
 {
   namespace cables
   {
+    using namespace dealii;
+
     class SolidBeamSection;
+    struct BeamMaterial;
 
     /// The solid-beam terms of one cable.
     class SolidBeamElement
     {
     public:
-      /// @p length_ratio: reference over unstressed length (prestress).
-      SolidBeamElement(const CableDefinition &cable, const double length_ratio);
+      /// The element of @p material; @p length_ratio: reference over
+      /// unstressed length (prestress).
+      SolidBeamElement(const BeamMaterial &material, const double length_ratio);
       ~SolidBeamElement();
 
       /**
