@@ -57,7 +57,6 @@ main(int argc, char **argv)
         {"Cables/Number of cables", "1"},
         {"Cables/Cable 1/Number of elements", "8"},
         {"Cables/Cable 1/Start support", "fixed"},
-        {"Cables/Cable 1/Distributed load", "true"},
         {"Cables/Cable 1/Distributed load/Function expression", "0; 0; -1"},
         {"Output/Quiet", "true"}};
       settings.insert(settings.end(), extra.begin(), extra.end());
@@ -159,7 +158,6 @@ main(int argc, char **argv)
      {{"Cables/Cable 1/polyline/Points", "0, 0, 0; 5, 0, -3.3166247903554; 10, 0, 0"},
       {"Cables/Cable 1/End support", "fixed"},
       {"Cables/Cable 1/Young's modulus", "1.2732395447351628e8"},
-      {"Cables/Cable 1/Distributed load", "true"},
       {"Cables/Cable 1/Distributed load/Function expression",
        "0; 0; -t"}}}};
   for (const auto &[name, extra] : rate_cases)

@@ -92,7 +92,6 @@ namespace
       }
     else
       {
-        s.push_back({"Cables/Cable 1/Distributed load", "true"});
         s.push_back(
           {"Cables/Cable 1/Distributed load/Function expression", "0; 0; -1"});
       }

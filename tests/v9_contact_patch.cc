@@ -84,7 +84,6 @@ main(int argc, char **argv)
          {"Cables/Cable 1/Start components", "xy"},
          {"Cables/Cable 1/End support", "fixed"},
          {"Cables/Cable 1/End components", "xy"},
-         {"Cables/Cable 1/Distributed load", "true"},
          {"Cables/Cable 1/Distributed load/Function expression", "0; 0; -100"},
          {"Contact/Number of pairs", "1"},
          {"Contact/Pair 1/Penalty", std::to_string(c.penalty)},

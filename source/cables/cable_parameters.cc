@@ -85,7 +85,7 @@ namespace pneuma
              unstressed_length  = 0.;
       std::string start_support = "free", end_support = "free",
                   start_components = "xyz", end_components = "xyz";
-      bool end_forces = false, distributed_load = false;
+      bool end_forces = false;
 
       std::map<std::string, std::unique_ptr<CableElement>> elements;
       std::map<std::string, std::unique_ptr<CableShape>>   shapes;
@@ -188,11 +188,8 @@ namespace pneuma
                             Patterns::Bool());
           loads::declare_function(prm, "Start force", 3, "0; 0; 0");
           loads::declare_function(prm, "End force", 3, "0; 0; 0");
-          prm.add_parameter("Distributed load",
-                            s.distributed_load,
-                            "Apply the Distributed load function [N/m per "
-                            "unstressed length].",
-                            Patterns::Bool());
+          // Dead load [N/m per unstressed length], function of the
+          // reference position and t; active unless all zero.
           loads::declare_function(prm, "Distributed load", 3, "0; 0; 0");
           loads::declare_function(prm, "End moment", 3, "0; 0; 0");
           s.elements = elements.declare_all(prm);
@@ -285,11 +282,14 @@ namespace pneuma
                                 *d.end_force,
                                 "End force",
                                 path + "/End force");
-          d.has_distributed_load = s.distributed_load;
           loads::parse_function(prm,
                                 *d.distributed_load,
                                 "Distributed load",
                                 path + "/Distributed load");
+          prm.enter_subsection("Distributed load");
+          d.has_distributed_load =
+            !is_zero_expression(prm.get("Function expression"));
+          prm.leave_subsection();
           loads::parse_function(prm,
                                 *d.end_moment,
                                 "End moment",
