@@ -54,8 +54,8 @@ main(int argc, char **argv)
       if (arg == "--print-parameters" || arg == "--print-parameters-json")
         {
           // One template of each repeated subsection, every variant.
-          const auto               layout = pneuma::InputLayout::template_layout();
-          pneuma::Simulator        simulator(comm, layout);
+          const auto        layout = pneuma::InputLayout::template_layout();
+          pneuma::Simulator simulator(comm, layout);
           dealii::ParameterHandler prm;
           simulator.declare_parameters(prm);
           if (root)
@@ -63,8 +63,7 @@ main(int argc, char **argv)
               if (arg == "--print-parameters-json")
                 prm.print_parameters(std::cout, dealii::ParameterHandler::JSON);
               else
-                prm.print_parameters(std::cout,
-                                     dealii::ParameterHandler::Text);
+                prm.print_parameters(std::cout, dealii::ParameterHandler::Text);
             }
           return 0;
         }
@@ -127,12 +126,13 @@ main(int argc, char **argv)
               prm.print_parameters(copy, dealii::ParameterHandler::ShortText);
             }
           const pneuma::RunResult result = simulator.run();
-          exit_code                       = result.exit_code;
+          exit_code                      = result.exit_code;
           if (root && exit_code != pneuma::success)
             std::cerr << "pneuma: " << result.message << std::endl;
           const auto &summary = result.summary;
           if (root)
-            for (unsigned int m = 0; summary.has("m" + std::to_string(m) + "_u");
+            for (unsigned int m = 0;
+                 summary.has("m" + std::to_string(m) + "_u");
                  ++m)
               {
                 const std::string key = "m" + std::to_string(m);

@@ -1,11 +1,11 @@
 // Consistency of the cable linearisation: the assembled tangent of the
 // tension-only cable (taut and slack elements, a prestressed helix, a
 // stiff and a soft cable) and of the solid beam (both laws, a bent
-// polyline with an end moment, a prestressed helix) against central finite differences of the
-// residual at a perturbed state; and the tension-only law: a cable pushed
-// together carries (almost) nothing and the solve converges, a pulled one
-// carries EA times the engineering strain exactly; a prestress force or an
-// unstressed length gives the expected force (Hooke for the cable, the
+// polyline with an end moment, a prestressed helix) against central finite
+// differences of the residual at a perturbed state; and the tension-only law: a
+// cable pushed together carries (almost) nothing and the solve converges, a
+// pulled one carries EA times the engineering strain exactly; a prestress force
+// or an unstressed length gives the expected force (Hooke for the cable, the
 // St. Venant-Kirchhoff uniaxial force EA lambda (lambda^2-1)/2 for the
 // solid beam, whose unstressed length is also set by L/(1 + F/EA)).
 
@@ -82,12 +82,14 @@ main(int argc, char **argv)
          {"Cables/Cable 1/polyline/Points", "0, 0, 0; 2, 0, 0"},
          {"Cables/Cable 1/Number of elements", "4"},
          {"Cables/Cable 1/Section semi-axes", "0.01"},
-         {"Cables/Cable 1/Young's modulus", std::to_string(1e6 / (M_PI * 1e-4))},
+         {"Cables/Cable 1/Young's modulus",
+          std::to_string(1e6 / (M_PI * 1e-4))},
          {"Cables/Cable 1/Start support", "fixed"},
          {"Cables/Cable 1/End support", "fixed"},
          {"Cables/Cable 1/End displacement/Function expression",
           std::to_string(d) + " * t; 0; 0"}});
-      const double N = s.summary.has("cable1_max_force") ? s.get("cable1_max_force") : NAN;
+      const double N =
+        s.summary.has("cable1_max_force") ? s.get("cable1_max_force") : NAN;
       if (d > 0.)
         ok &= pneuma_test::check("taut cable: axial force = EA strain",
                                  N,
@@ -96,7 +98,8 @@ main(int argc, char **argv)
       else
         {
           // Slack: EA r strain with r = 1e-6, i.e. 1e-6 of the taut force.
-          const bool pass = s.exit_code == 0 && std::abs(N) <= 1e-6 * 500. * 1.0001;
+          const bool pass =
+            s.exit_code == 0 && std::abs(N) <= 1e-6 * 500. * 1.0001;
           std::printf("slack cable: converged %s, axial force %.3e N "
                       "(taut would be -500 N) %s\n",
                       s.exit_code == 0 ? "yes" : "no",
@@ -112,8 +115,8 @@ main(int argc, char **argv)
   for (const std::string element : {"cable", "solid beam"})
     for (const bool by_length : {false, true})
       {
-        const double EA = 1e6, L = 2., N0 = 1500.;
-        const double L0 = L / (1. + N0 / EA);
+        const double          EA = 1e6, L = 2., N0 = 1500.;
+        const double          L0       = L / (1. + N0 / EA);
         pneuma_test::Settings settings = {
           {"Geometry/Type", "none"},
           {"Cables/Number of cables", "1"},
@@ -122,13 +125,14 @@ main(int argc, char **argv)
           {"Cables/Cable 1/Number of elements", "4"},
           {"Cables/Cable 1/Section semi-axes", "0.01"},
           {"Cables/Cable 1/solid beam/Poisson's ratio", "0"},
-          {"Cables/Cable 1/Young's modulus", std::to_string(EA / (M_PI * 1e-4))},
+          {"Cables/Cable 1/Young's modulus",
+           std::to_string(EA / (M_PI * 1e-4))},
           {"Cables/Cable 1/Start support", "fixed"},
           {"Cables/Cable 1/End support", "fixed"}};
         char buffer[64];
         std::snprintf(buffer, sizeof buffer, "%.15g", by_length ? L0 : N0);
-        settings.push_back({by_length ? "Cables/Cable 1/Unstressed length" :
-                                        "Cables/Cable 1/Prestress force",
+        settings.push_back({by_length ? "Cables/Cable 1/Unstressed length"
+                                      : "Cables/Cable 1/Prestress force",
                             buffer});
         const auto s = pneuma_test::run(settings);
         // A solid beam with St. Venant-Kirchhoff: the first Piola force of
@@ -136,30 +140,30 @@ main(int argc, char **argv)
         const double lambda = 1. + N0 / EA;
         const double reference =
           element == "cable" ? N0 : EA * lambda * (lambda * lambda - 1.) / 2.;
-        ok &= pneuma_test::check(element + (by_length ? ", unstressed length" :
-                                                        ", prestress force") +
-                                   ": axial force",
-                                 s.summary.has("cable1_max_force") ? s.get("cable1_max_force") : NAN,
-                                 reference,
-                                 1e-8);
+        ok &= pneuma_test::check(
+          element + (by_length ? ", unstressed length" : ", prestress force")
+            + ": axial force",
+          s.summary.has("cable1_max_force") ? s.get("cable1_max_force") : NAN,
+          reference,
+          1e-8);
       }
 
   // Quadratic rate: a solid-beam cantilever under a large tip force
   // (deflection about half the length) and the elastic catenary; order
   // log(r_{k+1})/log(r_k) of the last iteration above round-off.
-  const std::vector<std::pair<std::string, pneuma_test::Settings>> rate_cases = {
-    {"solid-beam cantilever",
-     {{"Cables/Cable 1/Element", "solid beam"},
-      {"Cables/Cable 1/polyline/Points", "0, 0, 0; 1, 0, 0"},
-      {"Cables/Cable 1/Section semi-axes", "0.02"},
-      {"Cables/Cable 1/End forces", "true"},
-      {"Cables/Cable 1/End force/Function expression", "0; 3e4 * t; 0"}}},
-    {"catenary",
-     {{"Cables/Cable 1/polyline/Points", "0, 0, 0; 5, 0, -3.3166247903554; 10, 0, 0"},
-      {"Cables/Cable 1/End support", "fixed"},
-      {"Cables/Cable 1/Young's modulus", "1.2732395447351628e8"},
-      {"Cables/Cable 1/Distributed load/Function expression",
-       "0; 0; -t"}}}};
+  const std::vector<std::pair<std::string, pneuma_test::Settings>> rate_cases =
+    {{"solid-beam cantilever",
+      {{"Cables/Cable 1/Element", "solid beam"},
+       {"Cables/Cable 1/polyline/Points", "0, 0, 0; 1, 0, 0"},
+       {"Cables/Cable 1/Section semi-axes", "0.02"},
+       {"Cables/Cable 1/End forces", "true"},
+       {"Cables/Cable 1/End force/Function expression", "0; 3e4 * t; 0"}}},
+     {"catenary",
+      {{"Cables/Cable 1/polyline/Points",
+        "0, 0, 0; 5, 0, -3.3166247903554; 10, 0, 0"},
+       {"Cables/Cable 1/End support", "fixed"},
+       {"Cables/Cable 1/Young's modulus", "1.2732395447351628e8"},
+       {"Cables/Cable 1/Distributed load/Function expression", "0; 0; -t"}}}};
   for (const auto &[name, extra] : rate_cases)
     {
       pneuma_test::Settings settings = {

@@ -54,10 +54,10 @@ namespace
     {"Chambers/Chamber 1/Liquid/Volume/Function expression", "0.1*t"}};
 
   bool
-  tangent_check(const std::string           &name,
-                pneuma_test::Settings        settings,
-                const unsigned int           degree,
-                const double                 amplitude)
+  tangent_check(const std::string    &name,
+                pneuma_test::Settings settings,
+                const unsigned int    degree,
+                const double          amplitude)
   {
     settings.push_back(
       {"Discretisation/Polynomial degree", std::to_string(degree)});
@@ -87,8 +87,8 @@ main(int argc, char **argv)
     {"Chambers/Chamber 1/Gas/Gas amount/Function expression", "1.5"});
   auto volume = sphere;
   volume.push_back({"Chambers/Chamber 1/Gas/Control", "volume"});
-  volume.push_back({"Chambers/Chamber 1/Gas/Volume/Function expression",
-                    "1.3"});
+  volume.push_back(
+    {"Chambers/Chamber 1/Gas/Volume/Function expression", "1.3"});
   for (const unsigned int degree : {1u, 2u})
     {
       ok = tangent_check("gas, closed amount", gas_amount, degree, 0.05) && ok;
@@ -116,8 +116,7 @@ main(int argc, char **argv)
      {"Chambers/Chamber 1/Regions", "0, 1, 2"},
      {"Chambers/Chamber 1/Filling", "liquid and gas"},
      {"Chambers/Chamber 1/Gas/Control", "gas amount"},
-     {"Chambers/Chamber 1/Gas/Gas amount/Function expression",
-      "1 + min(t, 1)"},
+     {"Chambers/Chamber 1/Gas/Gas amount/Function expression", "1 + min(t, 1)"},
      {"Chambers/Chamber 1/Liquid/Volume/Function expression",
       "0.15*max(t - 1, 0)"},
      {"Load stepping/Stage end times", "1, 2"},
@@ -125,7 +124,7 @@ main(int argc, char **argv)
      {"Load stepping/Maximum increment", "0.25"},
      {"Newton/Residual tolerance", "1e-12"},
      {"Output/Directory", "output-liquid-gas"}});
-  ok = ok && s.exit_code == 0;
+  ok                = ok && s.exit_code == 0;
   const auto &r     = s.last_residual_history;
   double      order = 0.;
   for (unsigned int k = 1; k + 1 < r.size(); ++k)
@@ -143,21 +142,21 @@ main(int argc, char **argv)
   const double V0  = s.history.front().get("c1_volume");
   const double p_a = 101325.;
   ok = pneuma_test::check("liquid and gas: p V_gas^1.4 / (p_a (2 V0)^1.4)",
-                          s.get("c1_absolute_pressure") *
-                            std::pow(s.get("c1_gas_volume"), 1.4) /
-                            (p_a * std::pow(2. * V0, 1.4)),
+                          s.get("c1_absolute_pressure")
+                            * std::pow(s.get("c1_gas_volume"), 1.4)
+                            / (p_a * std::pow(2. * V0, 1.4)),
                           1.,
-                          1e-8) &&
-       ok;
+                          1e-8)
+       && ok;
   ok = pneuma_test::check("liquid and gas: liquid volume",
                           s.get("c1_liquid_volume"),
                           0.15,
-                          1e-8) &&
-       ok;
+                          1e-8)
+       && ok;
   ok = pneuma_test::check("liquid and gas: vertical reaction / water weight",
                           s.summary.get_vector("reaction")[2],
                           1000. * 9.81 * 0.15,
-                          1e-8) &&
-       ok;
+                          1e-8)
+       && ok;
   return ok ? 0 : 1;
 }

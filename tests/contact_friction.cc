@@ -67,13 +67,14 @@ main(int argc, char **argv)
     const double R = 0.23, r = 0.01, rc = R + r - 2e-4, x = 1.;
     std::string  points;
     const auto   point = [&](const double y, const double z) {
-      points += (points.empty() ? "" : "; ") + number(x) + ", " + number(y) +
-                ", " + number(z);
+      points += (points.empty() ? "" : "; ") + number(x) + ", " + number(y)
+                + ", " + number(z);
     };
     point(-rc, -0.3);
     point(-rc, 0.);
     for (unsigned int i = 1; i < 24; ++i)
-      point(rc * std::cos(M_PI - M_PI * i / 24.), rc * std::sin(M_PI - M_PI * i / 24.));
+      point(rc * std::cos(M_PI - M_PI * i / 24.),
+            rc * std::sin(M_PI - M_PI * i / 24.));
     point(rc, 0.);
     point(rc, -0.3);
     auto s = cylinder();
@@ -103,7 +104,8 @@ main(int argc, char **argv)
           std::printf(" %u", n);
         std::printf("\n");
         ok &= pneuma_test::check("half wrap: T2 = T1 exp(mu pi)",
-                                 -result.summary.get_vector("cable1_end_reaction")[2],
+                                 -result.summary.get_vector(
+                                   "cable1_end_reaction")[2],
                                  T1 * std::exp(mu * M_PI),
                                  5e-3);
       }
@@ -112,11 +114,11 @@ main(int argc, char **argv)
   // Helix, one turn at 60 degrees to the axis.
   {
     const double       alpha = M_PI / 3., th = 10. * M_PI / 180.;
-    const unsigned int n     = 64;
-    const double       t[3]  = {std::cos(alpha),
-                                -std::sin(alpha) * std::cos(th),
-                                -std::sin(alpha) * std::sin(th)};
-    auto               s     = cylinder();
+    const unsigned int n    = 64;
+    const double       t[3] = {std::cos(alpha),
+                               -std::sin(alpha) * std::cos(th),
+                               -std::sin(alpha) * std::sin(th)};
+    auto               s    = cylinder();
     add(s,
         {{"Cables/Number of cables", "1"},
          {"Cables/Cable 1/Shape", "helix"},
@@ -131,12 +133,12 @@ main(int argc, char **argv)
          {"Cables/Cable 1/Prestress force", "1000"},
          {"Cables/Cable 1/End forces", "true"},
          {"Cables/Cable 1/Start force/Function expression",
-          number(-T1 * t[0]) + "; " + number(-T1 * t[1]) + "; " +
-            number(-T1 * t[2])},
+          number(-T1 * t[0]) + "; " + number(-T1 * t[1]) + "; "
+            + number(-T1 * t[2])},
          {"Cables/Cable 1/End support", "fixed"},
          {"Cables/Cable 1/End displacement/Function expression",
-          number(0.004 * t[0]) + "*t; " + number(0.004 * t[1]) + "*t; " +
-            number(0.004 * t[2]) + "*t"}});
+          number(0.004 * t[0]) + "*t; " + number(0.004 * t[1]) + "*t; "
+            + number(0.004 * t[2]) + "*t"}});
     const auto result = pneuma_test::run(s);
     if (result.exit_code != 0 || !result.summary.has("cable1_max_force"))
       {
@@ -146,11 +148,11 @@ main(int argc, char **argv)
     else
       {
         const double phi = 2. * M_PI * (n - 1.) / n;
-        ok &= pneuma_test::check(
-          "helix: T2/T1 = exp(mu phi sin(alpha))",
-          result.get("cable1_max_force") / result.get("cable1_min_force"),
-          std::exp(mu * phi * std::sin(alpha)),
-          5e-3);
+        ok &= pneuma_test::check("helix: T2/T1 = exp(mu phi sin(alpha))",
+                                 result.get("cable1_max_force")
+                                   / result.get("cable1_min_force"),
+                                 std::exp(mu * phi * std::sin(alpha)),
+                                 5e-3);
       }
   }
   // V8 ring.
@@ -171,18 +173,19 @@ main(int argc, char **argv)
          {"Load stepping/Initial increment", "0.25"},
          {"Load stepping/Maximum increment", "0.5"}});
     const auto result = pneuma_test::run(s);
-    if (result.exit_code != 0 || !result.summary.has("cable1_max_force") ||
-        !result.summary.has("contact1_points"))
+    if (result.exit_code != 0 || !result.summary.has("cable1_max_force")
+        || !result.summary.has("contact1_points"))
       {
         std::printf("ring: run failed (exit %d) FAIL\n", result.exit_code);
         ok = false;
       }
     else
       {
-        const double T = 0.5 * (result.get("cable1_max_force") +
-                                result.get("cable1_min_force"));
+        const double T =
+          0.5
+          * (result.get("cable1_max_force") + result.get("cable1_min_force"));
         const double total_force = result.get("contact1_total_force");
-        const auto   force = result.summary.get_vector("contact1_force");
+        const auto   force       = result.summary.get_vector("contact1_force");
         std::printf("ring: cable force %.1f N, %u/%u points in contact\n",
                     T,
                     static_cast<unsigned int>(
@@ -192,13 +195,12 @@ main(int argc, char **argv)
                                  total_force,
                                  2. * M_PI * T,
                                  5e-3);
-        const double resultant =
-          std::sqrt(force[0] * force[0] + force[1] * force[1] +
-                    force[2] * force[2]);
+        const double resultant = std::sqrt(
+          force[0] * force[0] + force[1] * force[1] + force[2] * force[2]);
         const bool pass = resultant < 1e-6 * total_force;
         std::printf("ring: resultant %.1e of the total (limit 1e-6) %s\n",
-                    resultant / total_force < 5e-12 ? 0. :
-                                                      resultant / total_force,
+                    resultant / total_force < 5e-12 ? 0.
+                                                    : resultant / total_force,
                     pass ? "PASS" : "FAIL");
         ok &= pass;
       }

@@ -21,44 +21,46 @@ main(int argc, char **argv)
   bool                                     ok = true;
   const auto                               s  = pneuma_test::run(
     {{"Geometry/Type", "closed cylinder"},
-     {"Geometry/closed cylinder/Radius", "0.23"},
-     {"Geometry/closed cylinder/Length", "2"},
-     {"Geometry/Global refinements", "2"},
-     {"Discretisation/Polynomial degree", "2"},
-     {"Materials/Region 0/Thickness", "1e-3"},
-     {"Materials/Region 0/Saint Venant-Kirchhoff/Young's modulus", "7.6e9"},
-     {"Materials/Region 1/Thickness", "1e-2"},
-     {"Materials/Region 1/Saint Venant-Kirchhoff/Young's modulus", "2.1e11"},
-     {"Materials/Region 2/Thickness", "1e-2"},
-     {"Materials/Region 2/Saint Venant-Kirchhoff/Young's modulus", "2.1e11"},
-     {"Boundary conditions/Fixed regions", "1, 2"},
-     {"Chambers/Number of chambers", "1"},
-     {"Chambers/Chamber 1/Regions", "0, 1, 2"},
-     {"Chambers/Chamber 1/Filling", "gas"},
-     {"Chambers/Chamber 1/Gas/Control", "pressure"},
-     {"Chambers/Chamber 1/Gas/Seal time", "1"},
-     {"Chambers/Chamber 1/Gas/Pressure/Function expression", "1e5*min(t, 1)"},
-     {"Cables/Number of cables", "1"},
-     {"Cables/Cable 1/polyline/Points", "1.03, -0.6, 0.241; 1.03, 0.6, 0.241"},
-     {"Cables/Cable 1/Number of elements", "48"},
-     {"Cables/Cable 1/Section semi-axes", "0.01"},
-     {"Cables/Cable 1/Prestress force", "500"},
-     {"Cables/Cable 1/Start support", "fixed"},
-     {"Cables/Cable 1/End support", "fixed"},
-     {"Cables/Cable 1/Start displacement/Function expression",
-      "0; 0; -0.05*max(t-1, 0)"},
-     {"Cables/Cable 1/End displacement/Function expression",
-      "0; 0; -0.05*max(t-1, 0)"},
-     {"Contact/Number of pairs", "1"},
-     {"Contact/Pair 1/Membrane regions", "0"},
-     {"Contact/Pair 1/Penalty", "1e7"},
-     {"Load stepping/Stage end times", "1, 2"},
-     {"Load stepping/Initial increment", "0.1"},
-     {"Load stepping/Maximum increment", "0.1"}});
-  if (s.exit_code != 0 || !s.summary.has("contact1_points") ||
-      !s.summary.has("cable1_max_force") || !s.summary.has("c1_pressure"))
+                                    {"Geometry/closed cylinder/Radius", "0.23"},
+                                    {"Geometry/closed cylinder/Length", "2"},
+                                    {"Geometry/Global refinements", "2"},
+                                    {"Discretisation/Polynomial degree", "2"},
+                                    {"Materials/Region 0/Thickness", "1e-3"},
+                                    {"Materials/Region 0/Saint Venant-Kirchhoff/Young's modulus", "7.6e9"},
+                                    {"Materials/Region 1/Thickness", "1e-2"},
+                                    {"Materials/Region 1/Saint Venant-Kirchhoff/Young's modulus", "2.1e11"},
+                                    {"Materials/Region 2/Thickness", "1e-2"},
+                                    {"Materials/Region 2/Saint Venant-Kirchhoff/Young's modulus", "2.1e11"},
+                                    {"Boundary conditions/Fixed regions", "1, 2"},
+                                    {"Chambers/Number of chambers", "1"},
+                                    {"Chambers/Chamber 1/Regions", "0, 1, 2"},
+                                    {"Chambers/Chamber 1/Filling", "gas"},
+                                    {"Chambers/Chamber 1/Gas/Control", "pressure"},
+                                    {"Chambers/Chamber 1/Gas/Seal time", "1"},
+                                    {"Chambers/Chamber 1/Gas/Pressure/Function expression", "1e5*min(t, 1)"},
+                                    {"Cables/Number of cables", "1"},
+                                    {"Cables/Cable 1/polyline/Points", "1.03, -0.6, 0.241; 1.03, 0.6, 0.241"},
+                                    {"Cables/Cable 1/Number of elements", "48"},
+                                    {"Cables/Cable 1/Section semi-axes", "0.01"},
+                                    {"Cables/Cable 1/Prestress force", "500"},
+                                    {"Cables/Cable 1/Start support", "fixed"},
+                                    {"Cables/Cable 1/End support", "fixed"},
+                                    {"Cables/Cable 1/Start displacement/Function expression",
+                                     "0; 0; -0.05*max(t-1, 0)"},
+                                    {"Cables/Cable 1/End displacement/Function expression",
+                                     "0; 0; -0.05*max(t-1, 0)"},
+                                    {"Contact/Number of pairs", "1"},
+                                    {"Contact/Pair 1/Membrane regions", "0"},
+                                    {"Contact/Pair 1/Penalty", "1e7"},
+                                    {"Load stepping/Stage end times", "1, 2"},
+                                    {"Load stepping/Initial increment", "0.1"},
+                                    {"Load stepping/Maximum increment", "0.1"}});
+  if (s.exit_code != 0 || !s.summary.has("contact1_points")
+      || !s.summary.has("cable1_max_force") || !s.summary.has("c1_pressure"))
     {
-      std::printf("run failed (exit %d): %s\nFAILED\n", s.exit_code, s.message.c_str());
+      std::printf("run failed (exit %d): %s\nFAILED\n",
+                  s.exit_code,
+                  s.message.c_str());
       return 1;
     }
   const auto   force          = s.summary.get_vector("contact1_force");
@@ -77,15 +79,15 @@ main(int argc, char **argv)
   ok &= active_points > 0;
   // Cable: reactions + contact force = 0 (z and x).
   for (const unsigned int d : {0u, 2u})
-    ok &= pneuma_test::check(std::string("cable equilibrium, ") + "xyz"[d] +
-                               ": -(reactions) = contact force",
+    ok &= pneuma_test::check(std::string("cable equilibrium, ") + "xyz"[d]
+                               + ": -(reactions) = contact force",
                              -(start_reaction[d] + end_reaction[d]),
                              force[d],
                              1e-6);
   // Membrane + gas: the caps carry what the cable pushes in.
   for (const unsigned int d : {0u, 2u})
-    ok &= pneuma_test::check(std::string("membrane equilibrium, ") + "xyz"[d] +
-                               ": cap reactions = contact force",
+    ok &= pneuma_test::check(std::string("membrane equilibrium, ") + "xyz"[d]
+                               + ": cap reactions = contact force",
                              reaction[d],
                              force[d],
                              1e-6);
@@ -94,8 +96,8 @@ main(int argc, char **argv)
   double pv_seal = 0.;
   for (const auto &row : s.history)
     if (std::abs(row.get("time") - 1.) < 1e-12)
-      pv_seal = row.get("c1_absolute_pressure") *
-                std::pow(row.get("c1_gas_volume"), 1.4);
+      pv_seal = row.get("c1_absolute_pressure")
+                * std::pow(row.get("c1_gas_volume"), 1.4);
   ok &= pneuma_test::check("gas law p V^1.4 after sealing",
                            s.get("c1_pv_kappa"),
                            pv_seal,

@@ -25,8 +25,8 @@ main()
     {
       // A patch of the cylinder of radius 0.5 about x, slightly perturbed.
       MasterPatch patch;
-      patch.degree           = degree;
-      const unsigned int n   = degree + 1;
+      patch.degree         = degree;
+      const unsigned int n = degree + 1;
       for (unsigned int j = 0; j < n; ++j)
         for (unsigned int i = 0; i < n; ++i)
           {
@@ -39,13 +39,13 @@ main()
             patch.nodes.push_back(y);
           }
       // rho_1 x rho_2 = (0, sin, cos) points outward here.
-      patch.sign = 1.;
-      const double radius = 0.01, penalty = 1e6, weight = 0.05;
+      patch.sign                         = 1.;
+      const double                radius = 0.01, penalty = 1e6, weight = 0.05;
       std::array<Tensor<1, 3>, 2> slave;
       slave[0][0] = 0.05, slave[0][1] = 0.503 * std::sin(0.12),
       slave[0][2] = 0.503 * std::cos(0.12);
       slave[1][0] = 0.16, slave[1][1] = 0.503 * std::sin(0.2),
-      slave[1][2] = 0.503 * std::cos(0.2);
+      slave[1][2]      = 0.503 * std::cos(0.2);
       const double eta = 0.37;
 
       const auto energy_at = [&](const std::vector<double> &v,
@@ -76,8 +76,8 @@ main()
 
       Vector<double>     g;
       FullMatrix<double> H;
-      const double       e = energy_at(v, &g, &H);
-      const Tensor<1, 3> x = (1. - eta) * slave[0] + eta * slave[1];
+      const double       e    = energy_at(v, &g, &H);
+      const Tensor<1, 3> x    = (1. - eta) * slave[0] + eta * slave[1];
       const Projection   proj = project(patch, x, radius);
       std::printf("degree %u: inside %s, xi = (%.4f, %.4f), gap %.4e, "
                   "energy %.4e\n",
@@ -93,15 +93,15 @@ main()
       double best = 1e300;
       {
         // Sample the patch and compare the nearest sample with the result.
-        MasterPatch p = patch;
+        MasterPatch p        = patch;
         const auto  position = [&](const double s, const double t) {
           Tensor<1, 3> r;
           const auto   l = [&](const unsigned int i, const double u) {
             if (degree == 1)
               return i == 0 ? 1. - u : u;
-            return i == 0 ? 2. * (u - 0.5) * (u - 1.) :
-                   i == 1 ? -4. * u * (u - 1.) :
-                            2. * u * (u - 0.5);
+            return i == 0   ? 2. * (u - 0.5) * (u - 1.)
+                      : i == 1 ? -4. * u * (u - 1.)
+                               : 2. * u * (u - 0.5);
           };
           for (unsigned int j = 0; j < n; ++j)
             for (unsigned int i = 0; i < n; ++i)
@@ -111,8 +111,8 @@ main()
         for (unsigned int a = 0; a <= 400; ++a)
           for (unsigned int b = 0; b <= 400; ++b)
             best = std::min(best, (x - position(a / 400., b / 400.)).norm());
-        const bool pass = proj.distance <= best + 1e-12 &&
-                          best - proj.distance < 1e-5;
+        const bool pass =
+          proj.distance <= best + 1e-12 && best - proj.distance < 1e-5;
         std::printf("  projection distance %.8f, nearest of 401^2 samples "
                     "%.8f: %s\n",
                     proj.distance,
@@ -122,17 +122,17 @@ main()
       }
 
       // Gradient vs central differences of the energy.
-      const double h      = 1e-7;
-      double       g_err  = 0., g_max = 0., H_err = 0., H_max = 0.;
+      const double h     = 1e-7;
+      double       g_err = 0., g_max = 0., H_err = 0., H_max = 0.;
       for (unsigned int i = 0; i < N; ++i)
         {
           auto vp = v, vm = v;
           vp[i] += h;
           vm[i] -= h;
           Vector<double> gp, gm;
-          const double   fd = (energy_at(vp, &gp, nullptr) -
-                             energy_at(vm, &gm, nullptr)) /
-                            (2. * h);
+          const double   fd =
+            (energy_at(vp, &gp, nullptr) - energy_at(vm, &gm, nullptr))
+            / (2. * h);
           g_err = std::max(g_err, std::abs(fd - g[i]));
           g_max = std::max(g_max, std::abs(g[i]));
           for (unsigned int j = 0; j < N; ++j)
@@ -156,10 +156,10 @@ main()
       // variables (energy gradient and Hessian against finite differences).
       {
         SlaveSection section;
-        section.a1[0] = Tensor<1, 3>({0., 0.006, 0.0});
-        section.a2[0] = Tensor<1, 3>({0.001, 0., 0.009});
-        section.a1[1] = Tensor<1, 3>({0., 0.0062, 0.0005});
-        section.a2[1] = Tensor<1, 3>({0.0008, -0.0004, 0.0088});
+        section.a1[0]       = Tensor<1, 3>({0., 0.006, 0.0});
+        section.a2[0]       = Tensor<1, 3>({0.001, 0., 0.009});
+        section.a1[1]       = Tensor<1, 3>({0., 0.0062, 0.0005});
+        section.a2[1]       = Tensor<1, 3>({0.0008, -0.0004, 0.0088});
         const auto energy_s = [&](const std::vector<double> &w,
                                   Vector<double>            *gs,
                                   FullMatrix<double>        *Hs) {
@@ -180,12 +180,12 @@ main()
               pm.nodes[a][c] = w[18 + 3 * a + c];
           const Tensor<1, 3> xs = (1. - eta) * sl[0] + eta * sl[1];
           const Projection   pr = project(pm, xs, radius);
-          return penalty_terms(pm, sl, eta, radius, penalty, weight, pr.xi, gs,
-                               Hs, &sc);
+          return penalty_terms(
+            pm, sl, eta, radius, penalty, weight, pr.xi, gs, Hs, &sc);
         };
         std::vector<double> w(v.begin(), v.begin() + 6);
-        for (const auto *vec : {&section.a1[0], &section.a2[0], &section.a1[1],
-                                &section.a2[1]})
+        for (const auto *vec :
+             {&section.a1[0], &section.a2[0], &section.a1[1], &section.a2[1]})
           for (unsigned int c = 0; c < 3; ++c)
             w.push_back((*vec)[c]);
         w.insert(w.end(), v.begin() + 6, v.end());
@@ -199,13 +199,15 @@ main()
             wp[i] += h;
             wm[i] -= h;
             Vector<double> gp, gm;
-            const double   fd = (energy_s(wp, &gp, nullptr) - energy_s(wm, &gm, nullptr)) /
-                              (2. * h);
+            const double   fd =
+              (energy_s(wp, &gp, nullptr) - energy_s(wm, &gm, nullptr))
+              / (2. * h);
             eg = std::max(eg, std::abs(fd - gs[i]));
             mg = std::max(mg, std::abs(gs[i]));
             for (unsigned int j = 0; j < w.size(); ++j)
               {
-                eH = std::max(eH, std::abs((gp[j] - gm[j]) / (2. * h) - Hs(j, i)));
+                eH =
+                  std::max(eH, std::abs((gp[j] - gm[j]) / (2. * h) - Hs(j, i)));
                 mH = std::max(mH, std::abs(Hs(j, i)));
               }
           }
@@ -224,7 +226,7 @@ main()
       for (const double offset : {0.0005, 0.25})
         {
           const Point<2> xi_anchor(proj.xi[0] + offset, proj.xi[1] - offset);
-          const auto force_at = [&](const std::vector<double> &w,
+          const auto     force_at = [&](const std::vector<double> &w,
                                     Vector<double>            &f,
                                     FullMatrix<double>        *J) {
             MasterPatch                 pm = patch;
@@ -239,12 +241,22 @@ main()
                 pm.nodes[a][c] = w[6 + 3 * a + c];
             const Tensor<1, 3> xs = (1. - eta) * sl[0] + eta * sl[1];
             const Projection   pr = project(pm, xs, radius);
-            return friction_terms(pm, xi_anchor, sl, eta, radius,
-                                  penalty, penalty, 0.3, weight, pr.xi, &f, J);
+            return friction_terms(pm,
+                                  xi_anchor,
+                                  sl,
+                                  eta,
+                                  radius,
+                                  penalty,
+                                  penalty,
+                                  0.3,
+                                  weight,
+                                  pr.xi,
+                                  &f,
+                                  J);
           };
           Vector<double>      f;
           FullMatrix<double>  J;
-          const FrictionState st = force_at(v, f, &J);
+          const FrictionState st  = force_at(v, f, &J);
           double              err = 0., big = 0.;
           for (unsigned int i = 0; i < N; ++i)
             {
@@ -256,7 +268,9 @@ main()
               force_at(vm, fm, nullptr);
               for (unsigned int j = 0; j < N; ++j)
                 {
-                  err = std::max(err, std::abs((fp[j] - fm[j]) / (2. * h) - J(j, i)));
+                  err =
+                    std::max(err,
+                             std::abs((fp[j] - fm[j]) / (2. * h) - J(j, i)));
                   big = std::max(big, std::abs(J(j, i)));
                 }
             }

@@ -30,8 +30,13 @@ namespace
     std::string  s;
     char         buffer[96];
     const auto   add = [&](const double y, const double z) {
-      std::snprintf(buffer, sizeof buffer, "%s%.12g, %.12g, %.12g",
-                    s.empty() ? "" : "; ", x, y, z);
+      std::snprintf(buffer,
+                    sizeof buffer,
+                    "%s%.12g, %.12g, %.12g",
+                    s.empty() ? "" : "; ",
+                    x,
+                    y,
+                    z);
       s += buffer;
     };
     add(-rc, -0.3);
@@ -88,9 +93,10 @@ main(int argc, char **argv)
         const double error =
           pneuma_test::make(settings)->check_tangent(1., 1e-4, 1e-8).first;
         const bool pass = error < 1e-6;
-        std::printf("degree %u: tangent with contact vs finite differences: %s\n",
-                    degree,
-                    pass ? "relative error < 1e-6" : "FAIL");
+        std::printf(
+          "degree %u: tangent with contact vs finite differences: %s\n",
+          degree,
+          pass ? "relative error < 1e-6" : "FAIL");
         if (!pass)
           std::printf("  relative error %.3e\n", error);
         ok &= pass;
@@ -102,10 +108,12 @@ main(int argc, char **argv)
       if (degree == 1)
         continue;
       const auto s = pneuma_test::run(wrap(degree));
-      if (s.exit_code != 0 || !s.summary.has("contact1_points") ||
-          !s.summary.has("cable1_max_force"))
+      if (s.exit_code != 0 || !s.summary.has("contact1_points")
+          || !s.summary.has("cable1_max_force"))
         {
-          std::printf("degree %u: run failed (exit %d) FAIL\n", degree, s.exit_code);
+          std::printf("degree %u: run failed (exit %d) FAIL\n",
+                      degree,
+                      s.exit_code);
           ok = false;
           continue;
         }
@@ -138,7 +146,8 @@ main(int argc, char **argv)
     settings.erase(std::remove_if(settings.begin(),
                                   settings.end(),
                                   [](const auto &e) {
-                                    return e.first.rfind("Cables/Cable 1/", 0) == 0;
+                                    return e.first.rfind("Cables/Cable 1/", 0)
+                                           == 0;
                                   }),
                    settings.end());
     const pneuma_test::Settings helix = {
@@ -156,8 +165,8 @@ main(int argc, char **argv)
       {"Cables/Cable 1/End support", "fixed"}};
     settings.insert(settings.end(), helix.begin(), helix.end());
     const auto s = pneuma_test::run(settings);
-    if (s.exit_code != 0 || !s.summary.has("contact1_points") ||
-        !s.summary.has("cable1_max_force"))
+    if (s.exit_code != 0 || !s.summary.has("contact1_points")
+        || !s.summary.has("cable1_max_force"))
       {
         std::printf("helix: run failed (exit %d) FAIL\n", s.exit_code);
         ok = false;
@@ -173,13 +182,14 @@ main(int argc, char **argv)
                     static_cast<unsigned int>(s.get("contact1_active_points")),
                     static_cast<unsigned int>(s.get("contact1_points")),
                     s.get("contact1_max_penetration"));
-        ok &= pneuma_test::check("  integral of the line load = 2 pi T sin(alpha)",
-                                 s.get("contact1_total_force"),
-                                 2. * M_PI * T * std::sin(alpha),
-                                 5e-3);
+        ok &=
+          pneuma_test::check("  integral of the line load = 2 pi T sin(alpha)",
+                             s.get("contact1_total_force"),
+                             2. * M_PI * T * std::sin(alpha),
+                             5e-3);
         // The middle node (half a turn): tangent t = cos(a) e_x + sin(a)
         // e_theta of the helix, e_theta at angle start + pi.
-        const double       th = start + M_PI;
+        const double               th = start + M_PI;
         const dealii::Tensor<1, 3> e_x({1., 0., 0.}),
           e_theta({0., -std::cos(th), -std::sin(th)});
         const dealii::Tensor<1, 3> t =

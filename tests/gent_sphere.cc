@@ -5,8 +5,8 @@
 //   p R/(mu H) = 2 (1/l - 1/l^7) Jm / (Jm - (2 l^2 + l^-4 - 3))
 // (doc/theory.md "Membrane laws"). For Jm = 10 and 30 at three stretches
 // each (for Jm = 30 before, through and past its limit point), the stretch
-// and pR/(muH) must be within 0.5 %. Also: the law's stress and tangent against finite
-// differences of its energy, and the assembled tangent of a Gent sphere
+// and pR/(muH) must be within 0.5 %. Also: the law's stress and tangent against
+// finite differences of its energy, and the assembled tangent of a Gent sphere
 // against finite differences of the residual.
 
 #include <deal.II/base/symmetric_tensor.h>
@@ -63,14 +63,14 @@ main(int argc, char **argv)
     dealii::SymmetricTensor<2, 2> S, S_p, S_m;
     dealii::SymmetricTensor<4, 2> D, D_p, D_m;
     law->evaluate(C, S, D);
-    const double h = 1e-6;
+    const double h     = 1e-6;
     double       err_S = 0., err_D = 0., norm_S = S.norm(), norm_D = D.norm();
     for (unsigned int i = 0; i < 2; ++i)
       for (unsigned int j = i; j < 2; ++j)
         {
           // dE_ij = h (dC_ij = 2h); a shear entry perturbs E_ij and E_ji.
           dealii::SymmetricTensor<2, 2> dC;
-          dC[i][j] = 2. * h;
+          dC[i][j]         = 2. * h;
           const double W_p = law->strain_energy(C + dC);
           const double W_m = law->strain_energy(C - dC);
           const double dW  = (W_p - W_m) / (2. * h) / (i == j ? 1. : 2.);
@@ -80,8 +80,8 @@ main(int argc, char **argv)
           for (unsigned int k = 0; k < 2; ++k)
             for (unsigned int l = k; l < 2; ++l)
               {
-                const double dS = (S_p[k][l] - S_m[k][l]) / (2. * h) /
-                                  (i == j ? 1. : 2.);
+                const double dS =
+                  (S_p[k][l] - S_m[k][l]) / (2. * h) / (i == j ? 1. : 2.);
                 err_D = std::max(err_D, std::abs(dS - D[k][l][i][j]));
               }
         }
@@ -114,8 +114,8 @@ main(int argc, char **argv)
     double              Jm, a;
     std::vector<double> stretches;
   };
-  for (const Case &c : {Case{10., 1.2, {1.2, 1.6, 2.2}},
-                        Case{30., 2.5, {1.2, 2.0, 3.5}}})
+  for (const Case &c :
+       {Case{10., 1.2, {1.2, 1.6, 2.2}}, Case{30., 2.5, {1.2, 2.0, 3.5}}})
     {
       std::string ends;
       for (const double l : c.stretches)
@@ -162,8 +162,8 @@ main(int argc, char **argv)
               ok = pneuma_test::check(name,
                                       row.get("c1_pressure") / 1e3,
                                       reference(l_target, c.Jm),
-                                      5e-3) &&
-                   ok;
+                                      5e-3)
+                   && ok;
             }
     }
   return ok ? 0 : 1;

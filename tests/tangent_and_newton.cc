@@ -43,17 +43,17 @@ main(int argc, char **argv)
 
   // Quadratic rate: order log(r_{k+1})/log(r_k) (residuals relative to the
   // first of the step) of the last iteration above round-off.
-  const auto s =
-    pneuma_test::run({{"Geometry/Type", "disc"},
-                      {"Geometry/disc/Radius", "0.1425"},
-                      {"Geometry/Global refinements", "3"},
-                      {"Materials/Region 0/Saint Venant-Kirchhoff/Young's modulus", "3.11488e8"},
-                      {"Materials/Region 0/Saint Venant-Kirchhoff/Poisson's ratio", "0.34"},
-                      {"Loads/Pressure/Function expression", "1e4*t"},
-                      {"Boundary conditions/Fixed boundaries", "0: xyz"},
-                      {"Load stepping/Initial increment", "0.25"},
-                      {"Newton/Residual tolerance", "1e-12"},
-                      {"Output/Directory", "output-newton"}});
+  const auto s = pneuma_test::run(
+    {{"Geometry/Type", "disc"},
+     {"Geometry/disc/Radius", "0.1425"},
+     {"Geometry/Global refinements", "3"},
+     {"Materials/Region 0/Saint Venant-Kirchhoff/Young's modulus", "3.11488e8"},
+     {"Materials/Region 0/Saint Venant-Kirchhoff/Poisson's ratio", "0.34"},
+     {"Loads/Pressure/Function expression", "1e4*t"},
+     {"Boundary conditions/Fixed boundaries", "0: xyz"},
+     {"Load stepping/Initial increment", "0.25"},
+     {"Newton/Residual tolerance", "1e-12"},
+     {"Output/Directory", "output-newton"}});
   const auto &r     = s.last_residual_history;
   double      order = 0.;
   for (unsigned int k = 1; k + 1 < r.size(); ++k)

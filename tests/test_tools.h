@@ -46,10 +46,10 @@ namespace pneuma_test
     std::vector<std::string> overrides;
     for (const auto &s : settings)
       overrides.push_back(s.first + "=" + s.second);
-    const auto layout = file.empty() ?
-                          pneuma::InputLayout::from_text("", overrides) :
-                          pneuma::InputLayout::read(file, overrides);
-    auto simulator = std::make_unique<pneuma::Simulator>(comm, layout);
+    const auto layout    = file.empty()
+                             ? pneuma::InputLayout::from_text("", overrides)
+                             : pneuma::InputLayout::read(file, overrides);
+    auto       simulator = std::make_unique<pneuma::Simulator>(comm, layout);
     dealii::ParameterHandler prm;
     simulator->declare_parameters(prm);
     if (file.empty())

@@ -20,27 +20,27 @@ namespace
   pneuma_test::Settings
   scene()
   {
-    return {
-      {"Geometry/Type", "gmsh"},
-      {"Geometry/gmsh/Mesh file",
-       std::string(PNEUMA_SOURCE_DIR) + "/meshes/divided_cylinder.msh"},
-      {"Geometry/Global refinements", "0"},
-      {"Geometry/gmsh/Orientation", "outward from interior point"},
-      {"Geometry/gmsh/Interior point", "0.25, 0, 0"},
-      {"Materials/Region 0/Thickness", "1e-3"},
-      {"Materials/Region 1/Thickness", "1e-3"},
-      {"Materials/Region 3/Thickness", "1e-3"},
-      {"Materials/Region 4/Thickness", "1e-3"},
-      {"Materials/Region 2/Law", "Saint Venant-Kirchhoff"},
-      {"Materials/Region 2/Thickness", "1e-3"},
-      {"Materials/Region 2/Saint Venant-Kirchhoff/Young's modulus", "1e8"},
-      {"Boundary conditions/Fixed regions", "0, 3"},
-      {"Boundary conditions/Prescribed displacement regions", "1, 4"},
-      {"Boundary conditions/Prescribed displacement/Function expression",
-       "-0.1*t*(x-0.5)/0.5; 0; 0"},
-      {"Load stepping/Initial increment", "0.25"},
-      {"Newton/Residual tolerance", "1e-10"},
-      {"Output/Monitor points", "0.5, 0, 0"}};
+    return {{"Geometry/Type", "gmsh"},
+            {"Geometry/gmsh/Mesh file",
+             std::string(PNEUMA_SOURCE_DIR) + "/meshes/divided_cylinder.msh"},
+            {"Geometry/Global refinements", "0"},
+            {"Geometry/gmsh/Orientation", "outward from interior point"},
+            {"Geometry/gmsh/Interior point", "0.25, 0, 0"},
+            {"Materials/Region 0/Thickness", "1e-3"},
+            {"Materials/Region 1/Thickness", "1e-3"},
+            {"Materials/Region 3/Thickness", "1e-3"},
+            {"Materials/Region 4/Thickness", "1e-3"},
+            {"Materials/Region 2/Law", "Saint Venant-Kirchhoff"},
+            {"Materials/Region 2/Thickness", "1e-3"},
+            {"Materials/Region 2/Saint Venant-Kirchhoff/Young's modulus",
+             "1e8"},
+            {"Boundary conditions/Fixed regions", "0, 3"},
+            {"Boundary conditions/Prescribed displacement regions", "1, 4"},
+            {"Boundary conditions/Prescribed displacement/Function expression",
+             "-0.1*t*(x-0.5)/0.5; 0; 0"},
+            {"Load stepping/Initial increment", "0.25"},
+            {"Newton/Residual tolerance", "1e-10"},
+            {"Output/Monitor points", "0.5, 0, 0"}};
   }
 } // namespace
 
@@ -48,7 +48,7 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  auto s = scene();
+  auto                                     s = scene();
   s.insert(s.end(),
            {{"Chambers/Number of chambers", "2"},
             {"Chambers/Chamber 1/Regions", "0, 3, 2"},
@@ -63,26 +63,27 @@ main(int argc, char **argv)
   const auto two = pneuma_test::run(s);
   bool       ok  = two.exit_code == 0;
 
-  const double p_a = 101325.;
+  const double p_a      = 101325.;
   double       worst[2] = {0., 0.};
   for (const auto &row : two.history)
     for (unsigned int c = 0; c < 2; ++c)
       {
         const std::string chamber = "c" + std::to_string(c + 1) + "_";
-        const double V0 = two.history.front().get(chamber + "volume");
-        worst[c] = std::max(worst[c],
-                            std::abs(row.get(chamber + "absolute_pressure") *
-                                       std::pow(row.get(chamber + "volume"), 1.4) /
-                                       (p_a * std::pow(V0, 1.4)) -
-                                     1.));
+        const double      V0      = two.history.front().get(chamber + "volume");
+        worst[c] =
+          std::max(worst[c],
+                   std::abs(row.get(chamber + "absolute_pressure")
+                              * std::pow(row.get(chamber + "volume"), 1.4)
+                              / (p_a * std::pow(V0, 1.4))
+                            - 1.));
       }
   for (unsigned int c = 0; c < 2; ++c)
-    ok = pneuma_test::check("chamber " + std::to_string(c + 1) +
-                              ": max over steps of p V^1.4 / (p_a V0^1.4)",
+    ok = pneuma_test::check("chamber " + std::to_string(c + 1)
+                              + ": max over steps of p V^1.4 / (p_a V0^1.4)",
                             1. + worst[c],
                             1.,
-                            1e-8) &&
-         ok;
+                            1e-8)
+         && ok;
   const double p1 = two.get("c1_pressure"), p2 = two.get("c2_pressure");
   const double dp = p1 - p2;
   std::printf("chamber 2 compressed to V/V0 = %.4f: p2 = %.1f Pa, p1 = %.1f "
@@ -106,7 +107,7 @@ main(int argc, char **argv)
                           "p1 - p2",
                           two.summary.get_vector("m0_u")[0],
                           one.summary.get_vector("m0_u")[0],
-                          1e-6) &&
-       ok;
+                          1e-6)
+       && ok;
   return ok ? 0 : 1;
 }

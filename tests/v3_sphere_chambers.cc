@@ -19,22 +19,22 @@ namespace
   pneuma::RunResult
   sphere(const pneuma_test::Settings &chamber)
   {
-    pneuma_test::Settings s = {
-      {"Geometry/Type", "sphere"},
-      {"Geometry/sphere/Radius", "1"},
-      {"Geometry/Global refinements", "3"},
-      {"Discretisation/Polynomial degree", "2"},
-      {"Materials/Region 0/Law", "neo-Hookean"},
-      {"Materials/Region 0/Thickness", "1e-3"},
-      {"Materials/Region 0/neo-Hookean/Shear modulus", "1e6"},
-      {"Boundary conditions/Fixed points",
-       "0,0,1: xy; 0,0,-1: xy; 1,0,0: yz; -1,0,0: yz"},
-      {"Chambers/Number of chambers", "1"},
-      {"Chambers/Chamber 1/Regions", "0"},
-      {"Load stepping/Stage end times", "0.5, 1, 2"},
-      {"Load stepping/Initial increment", "0.1"},
-      {"Load stepping/Maximum increment", "0.25"},
-      {"Output/Directory", "output-v3-chambers"}};
+    pneuma_test::Settings s = {{"Geometry/Type", "sphere"},
+                               {"Geometry/sphere/Radius", "1"},
+                               {"Geometry/Global refinements", "3"},
+                               {"Discretisation/Polynomial degree", "2"},
+                               {"Materials/Region 0/Law", "neo-Hookean"},
+                               {"Materials/Region 0/Thickness", "1e-3"},
+                               {"Materials/Region 0/neo-Hookean/Shear modulus",
+                                "1e6"},
+                               {"Boundary conditions/Fixed points",
+                                "0,0,1: xy; 0,0,-1: xy; 1,0,0: yz; -1,0,0: yz"},
+                               {"Chambers/Number of chambers", "1"},
+                               {"Chambers/Chamber 1/Regions", "0"},
+                               {"Load stepping/Stage end times", "0.5, 1, 2"},
+                               {"Load stepping/Initial increment", "0.1"},
+                               {"Load stepping/Maximum increment", "0.25"},
+                               {"Output/Directory", "output-v3-chambers"}};
     s.insert(s.end(), chamber.begin(), chamber.end());
     return pneuma_test::run(s);
   }
@@ -42,7 +42,7 @@ namespace
   bool
   check_path(const pneuma::RunResult &s, const std::string &mode)
   {
-    bool ok = s.exit_code == 0;
+    bool         ok = s.exit_code == 0;
     const double V0 = s.history.front().get("c1_volume");
     for (const auto &row : s.history)
       for (const double t_ref : {0.5, 1., 2.})
@@ -50,17 +50,24 @@ namespace
           {
             const double l_target = 1. + t_ref;
             const double l        = std::cbrt(row.get("c1_volume") / V0);
-            const double p_ref =
-              2. * (1. / l_target - std::pow(l_target, -7.));
-            char name[96];
-            std::snprintf(name, sizeof(name), "%s, l = %.1f: stretch",
-                          mode.c_str(), l_target);
+            const double p_ref = 2. * (1. / l_target - std::pow(l_target, -7.));
+            char         name[96];
+            std::snprintf(name,
+                          sizeof(name),
+                          "%s, l = %.1f: stretch",
+                          mode.c_str(),
+                          l_target);
             ok = pneuma_test::check(name, l, l_target, 5e-3) && ok;
-            std::snprintf(name, sizeof(name), "%s, l = %.1f: pR/(muH)",
-                          mode.c_str(), l_target);
-            ok = pneuma_test::check(name, row.get("c1_pressure") / 1e3, p_ref,
-                                    5e-3) &&
-                 ok;
+            std::snprintf(name,
+                          sizeof(name),
+                          "%s, l = %.1f: pR/(muH)",
+                          mode.c_str(),
+                          l_target);
+            ok = pneuma_test::check(name,
+                                    row.get("c1_pressure") / 1e3,
+                                    p_ref,
+                                    5e-3)
+                 && ok;
           }
     return ok;
   }
@@ -75,20 +82,19 @@ main(int argc, char **argv)
                                 "expression",
                                 "(1+t)^3"}}),
                        "volume control");
-  ok = check_path(
-         sphere({{"Chambers/Chamber 1/Gas/Control", "gas amount"},
-                 {"Chambers/Chamber 1/Gas/Gas amount/Function expression",
-                  "(1+t)^3*(1+2000*(1/(1+t)-1/(1+t)^7)/101325)^(1/1.4)"}}),
-         "gas amount") &&
-       ok;
+  ok      = check_path(sphere(
+                    {{"Chambers/Chamber 1/Gas/Control", "gas amount"},
+                          {"Chambers/Chamber 1/Gas/Gas amount/Function expression",
+                           "(1+t)^3*(1+2000*(1/(1+t)-1/(1+t)^7)/101325)^(1/1.4)"}}),
+                  "gas amount")
+       && ok;
 
   // Pressure control by the chamber: p = 1.3 mu H/R > p_max.
-  const auto s =
-    sphere({{"Chambers/Chamber 1/Gas/Control", "pressure"},
-            {"Chambers/Chamber 1/Gas/Pressure/Function expression",
-             "1300*min(t,1)"},
-            {"Load stepping/Stage end times", "1"},
-            {"Load stepping/Initial increment", "0.25"}});
+  const auto s = sphere(
+    {{"Chambers/Chamber 1/Gas/Control", "pressure"},
+     {"Chambers/Chamber 1/Gas/Pressure/Function expression", "1300*min(t,1)"},
+     {"Load stepping/Stage end times", "1"},
+     {"Load stepping/Initial increment", "0.25"}});
   const bool clean =
     s.exit_code == 2 && s.message.find("limit point") != std::string::npos;
   std::printf("pressure control, p = 1.3 mu H/R > p_max: exit code %d, "

@@ -7,12 +7,12 @@
 // extensibility changes H by 2e-4) starts stress-free on a circular arc of
 // length 12 (nodes on the arc); its H and sag are compared with the
 // inextensible values, and its convergence order with Irvine's elastic
-// catenary for the same EA. The elastic one (EA = 1e4 N) starts stress-free as a V of length 12 between the
-// supports, far from the answer (a mechanism: the pseudo-time continuation
-// of Newton finds the hanging shape). The weight is a distributed load for
-// the first and gravity on density * area for the second. Reported: H (support reaction), sag (the
-// apex node), T_max (support force); errors and the observed order over
-// 8, 16, 32, 64 linear elements.
+// catenary for the same EA. The elastic one (EA = 1e4 N) starts stress-free as
+// a V of length 12 between the supports, far from the answer (a mechanism: the
+// pseudo-time continuation of Newton finds the hanging shape). The weight is a
+// distributed load for the first and gravity on density * area for the second.
+// Reported: H (support reaction), sag (the apex node), T_max (support force);
+// errors and the observed order over 8, 16, 32, 64 linear elements.
 
 #include "test_tools.h"
 
@@ -35,7 +35,10 @@ namespace
     if (!arc)
       {
         const double depth = std::sqrt(36. - 25.);
-        std::snprintf(buffer, sizeof buffer, "0, 0, 0; 5, 0, %.15g; 10, 0, 0", -depth);
+        std::snprintf(buffer,
+                      sizeof buffer,
+                      "0, 0, 0; 5, 0, %.15g; 10, 0, 0",
+                      -depth);
         points = buffer;
         return depth;
       }
@@ -43,11 +46,11 @@ namespace
     double lo = 1e-3, hi = M_PI / 2;
     for (unsigned int k = 0; k < 100; ++k)
       {
-        const double mid = 0.5 * (lo + hi);
+        const double mid                            = 0.5 * (lo + hi);
         (std::sin(mid) / mid > 10. / 12. ? lo : hi) = mid;
       }
     const double theta = 0.5 * (lo + hi), R = 6. / theta;
-    const double zc    = R * std::cos(theta); // centre above the chord
+    const double zc = R * std::cos(theta); // centre above the chord
     points.clear();
     for (unsigned int i = 0; i <= n; ++i)
       {
@@ -69,9 +72,9 @@ namespace
            const bool         by_gravity)
   {
     std::string  points;
-    const double depth = reference_shape(n_elements, !by_gravity, points);
-    const double a     = 0.005; // section radius
-    const double area  = M_PI * a * a;
+    const double depth      = reference_shape(n_elements, !by_gravity, points);
+    const double a          = 0.005; // section radius
+    const double area       = M_PI * a * a;
     pneuma_test::Settings s = {
       {"Geometry/Type", "none"},
       {"Cables/Number of cables", "1"},
@@ -96,8 +99,8 @@ namespace
           {"Cables/Cable 1/Distributed load/Function expression", "0; 0; -1"});
       }
     const auto summary = pneuma_test::run(s);
-    if (summary.exit_code != 0 || !summary.summary.has("cable1_max_force") ||
-        summary.summary.has("cable2_max_force"))
+    if (summary.exit_code != 0 || !summary.summary.has("cable1_max_force")
+        || summary.summary.has("cable2_max_force"))
       return {NAN, NAN, NAN};
     const auto reaction = summary.summary.get_vector("cable1_start_reaction");
     const auto mid_u    = summary.summary.get_vector("cable1_mid_u");
@@ -124,7 +127,7 @@ main(int argc, char **argv)
   std::printf("Irvine's H for EA = 1e5 N: %.6f\n", H_irvine);
 
   // Near-inextensible, convergence in the number of elements.
-  const double H_ref = 4.695415, sag_ref = 2.923438, T_ref = 7.618853;
+  const double        H_ref = 4.695415, sag_ref = 2.923438, T_ref = 7.618853;
   std::vector<double> errors;
   Result              r{};
   for (const unsigned int n : {8u, 16u, 32u, 64u})

@@ -54,7 +54,13 @@ main(int argc, char **argv)
     {"penalty 1e5", 0., 0.013, 3, 1, false, 1e5},
     {"penalty 1e7", 0., 0.013, 3, 1, false, 1e7},
     {"solid beam, elliptic section (a = 0.02 vertical, b = 0.01), Q2",
-     0., 0.013, 3, 2, false, 1e6, true}};
+     0.,
+     0.013,
+     3,
+     2,
+     false,
+     1e6,
+     true}};
   std::vector<double> gap_error;
   for (const auto &c : cases)
     {
@@ -65,40 +71,42 @@ main(int argc, char **argv)
       const double oy = c.offset, z0 = Rc - 1e-5; // slightly pressed in
       const double EA_c = c.beam ? E * M_PI * 0.02 * 0.01 : EA;
       const double q_c  = q / (1. + T / EA_c);
-      const auto   s  = pneuma_test::run(
+      const auto   s    = pneuma_test::run(
         {{"Geometry/Type", "square"},
-         {"Geometry/square/Side length", "1"},
-         {"Geometry/Global refinements", std::to_string(c.refinements)},
-         {"Discretisation/Polynomial degree", std::to_string(c.degree)},
-         {"Boundary conditions/Fixed regions", "0"},
-         {"Cables/Number of cables", "1"},
-         {"Cables/Cable 1/polyline/Points",
-          point(-dx, oy - dy, z0) + "; " + point(dx, oy + dy, z0)},
-         {"Cables/Cable 1/Number of elements", "7"},
-         {"Cables/Cable 1/Element", c.beam ? "solid beam" : "cable"},
-         {"Cables/Cable 1/Section semi-axes", c.beam ? "0.02, 0.01" : "0.01"},
-         {"Cables/Cable 1/solid beam/Section axis", "0, 0, 1"},
-         {"Cables/Cable 1/solid beam/Poisson's ratio", "0"},
-         {"Cables/Cable 1/Prestress force", "100"},
-         {"Cables/Cable 1/Start support", "fixed"},
-         {"Cables/Cable 1/Start components", "xy"},
-         {"Cables/Cable 1/End support", "fixed"},
-         {"Cables/Cable 1/End components", "xy"},
-         {"Cables/Cable 1/Distributed load/Function expression", "0; 0; -100"},
-         {"Contact/Number of pairs", "1"},
-         {"Contact/Pair 1/Penalty", std::to_string(c.penalty)},
-         {"Contact/Pair 1/Integration", c.lobatto ? "lobatto" : "gauss"},
-         {"Newton/Residual tolerance", "1e-10"}});
-      if (s.exit_code != 0 || !s.summary.has("contact1_points") ||
-          !s.summary.has("cable1_max_force"))
+              {"Geometry/square/Side length", "1"},
+              {"Geometry/Global refinements", std::to_string(c.refinements)},
+              {"Discretisation/Polynomial degree", std::to_string(c.degree)},
+              {"Boundary conditions/Fixed regions", "0"},
+              {"Cables/Number of cables", "1"},
+              {"Cables/Cable 1/polyline/Points",
+               point(-dx, oy - dy, z0) + "; " + point(dx, oy + dy, z0)},
+              {"Cables/Cable 1/Number of elements", "7"},
+              {"Cables/Cable 1/Element", c.beam ? "solid beam" : "cable"},
+              {"Cables/Cable 1/Section semi-axes", c.beam ? "0.02, 0.01" : "0.01"},
+              {"Cables/Cable 1/solid beam/Section axis", "0, 0, 1"},
+              {"Cables/Cable 1/solid beam/Poisson's ratio", "0"},
+              {"Cables/Cable 1/Prestress force", "100"},
+              {"Cables/Cable 1/Start support", "fixed"},
+              {"Cables/Cable 1/Start components", "xy"},
+              {"Cables/Cable 1/End support", "fixed"},
+              {"Cables/Cable 1/End components", "xy"},
+              {"Cables/Cable 1/Distributed load/Function expression", "0; 0; -100"},
+              {"Contact/Number of pairs", "1"},
+              {"Contact/Pair 1/Penalty", std::to_string(c.penalty)},
+              {"Contact/Pair 1/Integration", c.lobatto ? "lobatto" : "gauss"},
+              {"Newton/Residual tolerance", "1e-10"}});
+      if (s.exit_code != 0 || !s.summary.has("contact1_points")
+          || !s.summary.has("cable1_max_force"))
         {
-          std::printf("%s: run failed (exit %d) FAIL\n", c.name.c_str(), s.exit_code);
+          std::printf("%s: run failed (exit %d) FAIL\n",
+                      c.name.c_str(),
+                      s.exit_code);
           ok = false;
           continue;
         }
       const auto active_points =
         static_cast<unsigned int>(s.get("contact1_active_points"));
-      const auto points = static_cast<unsigned int>(s.get("contact1_points"));
+      const auto   points = static_cast<unsigned int>(s.get("contact1_points"));
       const double max_penetration = s.get("contact1_max_penetration");
       const double penetration     = q_c / c.penalty;
       std::printf("%s: %u/%u points active\n",
@@ -116,11 +124,11 @@ main(int argc, char **argv)
                                c.beam ? 1e-3 : 1e-6);
       // Every node sinks to the same height R - q/eps_N.
       for (const std::string node : {"start", "mid", "end"})
-        ok &= pneuma_test::check("  node height",
-                                 z0 + s.summary.get_vector("cable1_" + node +
-                                                           "_u")[2],
-                                 Rc - penetration,
-                                 c.beam ? 1e-6 : 1e-8);
+        ok &= pneuma_test::check(
+          "  node height",
+          z0 + s.summary.get_vector("cable1_" + node + "_u")[2],
+          Rc - penetration,
+          c.beam ? 1e-6 : 1e-8);
       if (c.name.rfind("penalty", 0) == 0 || c.name == "aligned, Gauss, Q1")
         gap_error.push_back(max_penetration);
     }
@@ -128,7 +136,8 @@ main(int argc, char **argv)
   // 1e7 (cases 0, 4, 5): it scales like 1/eps_N.
   if (gap_error.size() == 3)
     {
-      const double r1 = gap_error[1] / gap_error[0], r2 = gap_error[0] / gap_error[2];
+      const double r1 = gap_error[1] / gap_error[0],
+                   r2 = gap_error[0] / gap_error[2];
       std::printf("penetration ratio eps 1e5/1e6: %.6f, 1e6/1e7: %.6f "
                   "(1/eps_N: 10)\n",
                   r1,

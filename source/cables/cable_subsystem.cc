@@ -108,8 +108,8 @@ namespace pneuma
       // accepted if that error stays below the nodal load f:
       // s >= W sqrt(EA/(8 f)). Nor should s be below the total load, the
       // order of the forces the cable will carry.
-      const MPI_Comm comm  = model.mpi_communicator();
-      double         load  = 0., f_max = 0.;
+      const MPI_Comm comm = model.mpi_communicator();
+      double         load = 0., f_max = 0.;
       for (const auto i : model.locally_owned())
         {
           load += std::abs(external[i]);
@@ -118,17 +118,17 @@ namespace pneuma
       load  = Utilities::MPI::sum(load, comm);
       f_max = Utilities::MPI::max(f_max, comm);
       const double s0 =
-        f_max > 0. ?
-          std::max(load,
-                   load * std::sqrt(cables.axial_stiffness() / (8. * f_max))) :
-          0.;
+        f_max > 0.
+          ? std::max(load,
+                     load * std::sqrt(cables.axial_stiffness() / (8. * f_max)))
+          : 0.;
       if (s0 > 0. && factor > 0.)
         return s0;
       // No load: mean(diag K)/mean(diag L) over the free cable dofs.
       double k_sum = 0., m_sum = 0.;
       for (const auto i : model.locally_owned())
-        if (i >= range.first && i < range.first + range.size &&
-            !constraints.is_constrained(i))
+        if (i >= range.first && i < range.first + range.size
+            && !constraints.is_constrained(i))
           {
             k_sum += std::abs(K.diag_element(i));
             m_sum += L.diag_element(i);
@@ -149,12 +149,8 @@ namespace pneuma
     CableSubsystem::assemble(const Assembly &a)
     {
       TimerOutput::Scope t(model.timer(), "cable assembly");
-      cables.assemble(a.time,
-                      *a.field,
-                      *a.constraints,
-                      a.tangent,
-                      a.residual,
-                      a.external);
+      cables.assemble(
+        a.time, *a.field, *a.constraints, a.tangent, a.residual, a.external);
     }
 
     void
@@ -197,13 +193,20 @@ namespace pneuma
           statistics.add(g, "max_force", "N", r.max_force, all, root);
           statistics.add(g, "min_force", "N", r.min_force, all, root);
           statistics.add(g, "length", "m", r.length, all, root);
-          statistics.add(g, "max_bending_moment", "N m", r.max_bending, summary, root);
-          statistics.add(g, "max_torsion_moment", "N m", r.max_torsion, summary, root);
-          statistics.add(g, "end_rotation", "rad", r.end_rotation, summary, root);
-          statistics.add_vector(g, "start_reaction", "N", r.start_reaction, all, root);
-          statistics.add_vector(g, "end_reaction", "N", r.end_reaction, report, root);
-          statistics.add_vector(g, "start_u", "m", r.start_displacement, summary, root);
-          statistics.add_vector(g, "end_u", "m", r.end_displacement, summary, root);
+          statistics.add(
+            g, "max_bending_moment", "N m", r.max_bending, summary, root);
+          statistics.add(
+            g, "max_torsion_moment", "N m", r.max_torsion, summary, root);
+          statistics.add(
+            g, "end_rotation", "rad", r.end_rotation, summary, root);
+          statistics.add_vector(
+            g, "start_reaction", "N", r.start_reaction, all, root);
+          statistics.add_vector(
+            g, "end_reaction", "N", r.end_reaction, report, root);
+          statistics.add_vector(
+            g, "start_u", "m", r.start_displacement, summary, root);
+          statistics.add_vector(
+            g, "end_u", "m", r.end_displacement, summary, root);
           statistics.add_vector(g, "mid_u", "m", r.mid_displacement, all, root);
         }
     }

@@ -48,10 +48,10 @@ namespace pneuma
         }
       if (output)
         std::fill(output->begin(), output->end(), 0.);
-      std::vector<double>          N(n), dN(n);
-      SolidBeamSection::Gradient   gradient;
-      FullMatrix<double>           hessian;
-      const unsigned int n_q = fe_values.n_quadrature_points;
+      std::vector<double>        N(n), dN(n);
+      SolidBeamSection::Gradient gradient;
+      FullMatrix<double>         hessian;
+      const unsigned int         n_q = fe_values.n_quadrature_points;
       for (unsigned int q = 0; q < n_q; ++q)
         {
           SolidBeamSection::State Q, x;
@@ -80,32 +80,32 @@ namespace pneuma
                 {
                   if (cell_residual)
                     (*cell_residual)(i) +=
-                      (gradient[value_index[i]] * N[i] +
-                       gradient[derivative_index[i]] * dN[i]) *
-                      JxW;
+                      (gradient[value_index[i]] * N[i]
+                       + gradient[derivative_index[i]] * dN[i])
+                      * JxW;
                   if (cell_matrix)
                     for (unsigned int j = 0; j < n; ++j)
                       (*cell_matrix)(i, j) +=
-                        (N[i] * N[j] *
-                           hessian(value_index[i], value_index[j]) +
-                         N[i] * dN[j] *
-                           hessian(value_index[i], derivative_index[j]) +
-                         dN[i] * N[j] *
-                           hessian(derivative_index[i], value_index[j]) +
-                         dN[i] * dN[j] *
-                           hessian(derivative_index[i], derivative_index[j])) *
-                        JxW;
+                        (N[i] * N[j] * hessian(value_index[i], value_index[j])
+                         + N[i] * dN[j]
+                             * hessian(value_index[i], derivative_index[j])
+                         + dN[i] * N[j]
+                             * hessian(derivative_index[i], value_index[j])
+                         + dN[i] * dN[j]
+                             * hessian(derivative_index[i],
+                                       derivative_index[j]))
+                        * JxW;
                 }
             }
           if (output)
             {
-              const SectionResultants r = section->resultants(Q, x);
-              const double values[6]    = {r.axial_force,
-                                           r.bending_moment_1,
-                                           r.bending_moment_2,
-                                           r.torsion_moment,
-                                           r.stretch_1,
-                                           r.stretch_2};
+              const SectionResultants r         = section->resultants(Q, x);
+              const double            values[6] = {r.axial_force,
+                                                   r.bending_moment_1,
+                                                   r.bending_moment_2,
+                                                   r.torsion_moment,
+                                                   r.stretch_1,
+                                                   r.stretch_2};
               for (unsigned int k = 0; k < 6 && k < output->size(); ++k)
                 (*output)[k] += values[k] / n_q;
             }
@@ -129,7 +129,7 @@ namespace pneuma
     } // namespace
 
     double
-    SolidBeamElement::section_rotation(const Tensor<1, 3>                &moment,
+    SolidBeamElement::section_rotation(const Tensor<1, 3> &moment,
                                        const std::array<Tensor<1, 3>, 2> &A,
                                        const std::array<double, 2>       &theta)
     {
@@ -163,10 +163,11 @@ namespace pneuma
                 (*theta)[k] = theta_previous[k];
               continue;
             }
-          const double        Mk     = M * weight[k];
-          const Tensor<1, 3> &d      = a[k];
-          const Tensor<1, 3>  d_ref  = a_previous[k].norm() > 0. ? a_previous[k] : A[k];
-          const unsigned int  offset = 3 + 3 * k;
+          const double        Mk = M * weight[k];
+          const Tensor<1, 3> &d  = a[k];
+          const Tensor<1, 3>  d_ref =
+            a_previous[k].norm() > 0. ? a_previous[k] : A[k];
+          const unsigned int offset = 3 + 3 * k;
           // theta_k = theta_previous + the angle from d_ref to d about m,
           // both projected on the plane normal to m.
           const Tensor<1, 3> p     = d - (d * m) * m;
@@ -174,8 +175,8 @@ namespace pneuma
           const double       s     = p * p;
           if (theta)
             (*theta)[k] =
-              theta_previous[k] +
-              std::atan2(cross_product_3d(p_ref, p) * m, p_ref * p);
+              theta_previous[k]
+              + std::atan2(cross_product_3d(p_ref, p) * m, p_ref * p);
           // dtheta/dd = (m x p)/|p|^2; its derivative
           // [m x]/|p|^2 - 2 (m x p) (x) p / |p|^4.
           const Tensor<1, 3> w = cross_product_3d(m, p);

@@ -18,10 +18,9 @@ namespace pneuma
   {
     namespace
     {
-      const UpdateFlags wall_flags = update_values | update_gradients |
-                                     update_normal_vectors |
-                                     update_quadrature_points |
-                                     update_JxW_values;
+      const UpdateFlags wall_flags =
+        update_values | update_gradients | update_normal_vectors
+        | update_quadrature_points | update_JxW_values;
 
       /// Where one pass over a cell's quadrature points puts its results.
       struct CellIntegrals
@@ -29,8 +28,8 @@ namespace pneuma
         FullMatrix<double> *matrix   = nullptr; ///< += d(-f)/du
         Vector<double>     *residual = nullptr; ///< -= f
         Vector<double>     *q        = nullptr; ///< += dV/du (or dV_l/du)
-        double volume = 0., liquid_volume = 0., free_surface = 0.,
-               wetted = 0., area = 0.;
+        double volume = 0., liquid_volume = 0., free_surface = 0., wetted = 0.,
+               area = 0.;
       };
 
       /**
@@ -49,8 +48,8 @@ namespace pneuma
                 const double               g,
                 CellIntegrals             &out)
       {
-        const auto        &fe     = fe_values.get_fe();
-        const unsigned int n_dofs = fe.n_dofs_per_cell();
+        const auto                        &fe     = fe_values.get_fe();
+        const unsigned int                 n_dofs = fe.n_dofs_per_cell();
         std::vector<unsigned int>          component(n_dofs);
         std::vector<double>                N(n_dofs);
         std::vector<std::array<double, 2>> dN(n_dofs);
@@ -70,15 +69,15 @@ namespace pneuma
                   fe_values.shape_grad_component(i, q, component[i]);
                 dN[i][0] = grad * frame.e[0];
                 dN[i][1] = grad * frame.e[1];
-                N[i] = fe_values.shape_value_component(i, q, component[i]);
+                N[i]     = fe_values.shape_value_component(i, q, component[i]);
                 u_q[component[i]] += local_u[i] * N[i];
                 for (unsigned int d = 0; d < 3; ++d)
                   Gu[component[i]][d] += local_u[i] * grad[d];
               }
-            const auto         a  = membrane::deformed_tangents(frame, Gu);
-            const Tensor<1, 3> av = s * cross_product_3d(a[0], a[1]);
-            const Point<3>     x  = fe_values.quadrature_point(q) + u_q;
-            const double       dA = fe_values.JxW(q);
+            const auto         a     = membrane::deformed_tangents(frame, Gu);
+            const Tensor<1, 3> av    = s * cross_product_3d(a[0], a[1]);
+            const Point<3>     x     = fe_values.quadrature_point(q) + u_q;
+            const double       dA    = fe_values.JxW(q);
             const double       depth = load.level + unit_gravity * x;
             double             p     = load.gas_pressure;
             if (liquid)
@@ -119,9 +118,9 @@ namespace pneuma
                 for (unsigned int j = 0; j < n_dofs; ++j)
                   {
                     const unsigned int cj = component[j];
-                    double             k  = p * N[i]
-                                 * (dN[j][0] * e_x_a2[cj][ci]
-                                    + dN[j][1] * a1_x_e[cj][ci]);
+                    double             k =
+                      p * N[i]
+                      * (dN[j][0] * e_x_a2[cj][ci] + dN[j][1] * a1_x_e[cj][ci]);
                     if (liquid) // dp/du_j = -rho g (-g_hat . e_cj) N_j
                       k += N[i] * av[ci] * rho_g * unit_gravity[cj] * N[j];
                     (*out.matrix)(i, j) -= k * dA;
@@ -147,17 +146,17 @@ namespace pneuma
       /// The hydrostatic terms of one wall over its wetted part: the whole
       /// cell (@p fe_values) if wet, the generated rule if cut.
       void
-      integrate_wetted(const FreeSurfaceQuadrature::Location       at,
-                       const FreeSurfaceQuadrature                &free_surface,
-                       const Mapping<2, 3>                        &mapping,
+      integrate_wetted(const FreeSurfaceQuadrature::Location at,
+                       const FreeSurfaceQuadrature          &free_surface,
+                       const Mapping<2, 3>                  &mapping,
                        const DoFHandler<2, 3>::active_cell_iterator &cell,
-                       const FEValues<2, 3>                       &fe_values,
-                       const std::vector<double>                  &local_u,
-                       const double                                s,
-                       const ChamberLoad                          &load,
-                       const Tensor<1, 3>                         &unit_gravity,
-                       const double                                g,
-                       CellIntegrals                              &out)
+                       const FEValues<2, 3>                         &fe_values,
+                       const std::vector<double>                    &local_u,
+                       const double                                  s,
+                       const ChamberLoad                            &load,
+                       const Tensor<1, 3> &unit_gravity,
+                       const double        g,
+                       CellIntegrals      &out)
       {
         if (at == FreeSurfaceQuadrature::Location::wet)
           integrate(fe_values, local_u, s, load, true, unit_gravity, g, out);
@@ -173,9 +172,8 @@ namespace pneuma
       }
     } // namespace
 
-    ChamberAssembler::ChamberAssembler(
-      const geometry::SceneGenerator &geometry,
-      const ChamberParameters        &parameters)
+    ChamberAssembler::ChamberAssembler(const geometry::SceneGenerator &geometry,
+                                       const ChamberParameters &parameters)
       : geometry(geometry)
       , parameters(parameters)
     {
@@ -190,9 +188,9 @@ namespace pneuma
       dof_handler       = &dof_handler_;
       degree            = degree_;
       gravity_magnitude = parameters.gravity.norm();
-      unit_gravity      = gravity_magnitude > 0. ?
-                            parameters.gravity / gravity_magnitude :
-                            Tensor<1, 3>({0., 0., -1.});
+      unit_gravity      = gravity_magnitude > 0.
+                            ? parameters.gravity / gravity_magnitude
+                            : Tensor<1, 3>({0., 0., -1.});
       membership.clear();
       for (unsigned int c = 0; c < parameters.chambers.size(); ++c)
         for (const auto &[id, sign] : parameters.chambers[c].regions)
@@ -227,10 +225,10 @@ namespace pneuma
     void
     ChamberAssembler::check_chambers() const
     {
-      const auto     &fe = dof_handler->get_fe();
-      const QGauss<2> quadrature(degree + 1);
-      FEValues<2, 3>  fe_values(*mapping, fe, quadrature, wall_flags);
-      const unsigned int n = parameters.chambers.size();
+      const auto               &fe = dof_handler->get_fe();
+      const QGauss<2>           quadrature(degree + 1);
+      FEValues<2, 3>            fe_values(*mapping, fe, quadrature, wall_flags);
+      const unsigned int        n = parameters.chambers.size();
       std::vector<Tensor<1, 3>> sum(n);
       std::vector<double>       area(n, 0.);
       std::map<types::material_id, double> region_area;
@@ -254,8 +252,8 @@ namespace pneuma
             region_area[cell->material_id()] += cell_area;
             for (const auto &[c, rs] : walls)
               {
-                const double s = wall_sign(
-                  geometry, parameters.chambers[c], rs, x, n_mean);
+                const double s =
+                  wall_sign(geometry, parameters.chambers[c], rs, x, n_mean);
                 sum[c] += s * cell_vector;
                 area[c] += cell_area;
                 region_vector[{c, cell->material_id()}] += s * cell_vector;
@@ -271,8 +269,8 @@ namespace pneuma
                 region_area.count(id) ? region_area.at(id) : 0., comm);
               check_input(a > 0.,
                           def.path + "/Regions",
-                          "the mesh has no cells in region " +
-                            std::to_string(id));
+                          "the mesh has no cells in region "
+                            + std::to_string(id));
             }
           Tensor<1, 3> gap;
           for (unsigned int d = 0; d < 3; ++d)
@@ -284,10 +282,10 @@ namespace pneuma
                           def.path + "/Regions",
                           "the walls of an open tank must face out of the "
                           "liquid, i.e. down along gravity (their area "
-                          "vectors sum to " +
-                            std::to_string(gap * unit_gravity) +
-                            " m^2 along gravity); flip them with a minus "
-                            "sign");
+                          "vectors sum to "
+                            + std::to_string(gap * unit_gravity)
+                            + " m^2 along gravity); flip them with a minus "
+                              "sign");
               gap -= (gap * unit_gravity) * unit_gravity;
             }
           if (gap.norm() > 1e-8 * total)
@@ -310,13 +308,12 @@ namespace pneuma
               msg << "the oriented walls do not close the chamber: their "
                      "area vectors sum to ("
                   << gap[0] << ", " << gap[1] << ", " << gap[2]
-                  << ") m^2, |gap| = " << gap.norm() << " m^2 for "
-                  << total
+                  << ") m^2, |gap| = " << gap.norm() << " m^2 for " << total
                   << " m^2 of wall. Add the missing regions or flip a wall "
                      "with a minus sign"
                   << (def.open ? " (an open tank may only lack walls "
-                                 "parallel to gravity)" :
-                                 "")
+                                 "parallel to gravity)"
+                               : "")
                   << hint;
               throw InputError(def.path + "/Regions", msg.str());
             }
@@ -332,7 +329,7 @@ namespace pneuma
                                  const AffineConstraints<double> &constraints,
                                  const std::vector<ChamberLoad>  &loads,
                                  std::vector<ChamberMeasures>    &measures,
-                                 const bool with_vectors)
+                                 const bool                       with_vectors)
       : assembler(assembler)
       , u(u)
       , constraints(constraints)
@@ -427,9 +424,9 @@ namespace pneuma
                   support_ready = true;
                 }
               for (unsigned int k = 0; k < psi.size(); ++k)
-                psi[k] = assembler.height(support_values.quadrature_point(k) +
-                                          u_support[k]) -
-                         load.level;
+                psi[k] = assembler.height(support_values.quadrature_point(k)
+                                          + u_support[k])
+                         - load.level;
               cell_ql       = 0;
               out.q         = with_vectors ? &cell_ql : nullptr;
               const auto at = free_surface.classify(psi);
@@ -490,7 +487,7 @@ namespace pneuma
                                std::vector<ChamberMeasures>    &measures,
                                const bool with_vectors) const
     {
-      Pass               pass(*this, u, constraints, loads, measures, with_vectors);
+      Pass pass(*this, u, constraints, loads, measures, with_vectors);
       const unsigned int n_dofs = dof_handler->get_fe().n_dofs_per_cell();
       FullMatrix<double> cell_matrix(n_dofs, n_dofs);
       Vector<double>     cell_residual(n_dofs);
@@ -498,8 +495,8 @@ namespace pneuma
       std::vector<double>                  local_u(n_dofs);
       for (const auto &cell : dof_handler->active_cell_iterators())
         {
-          if (!cell->is_locally_owned() ||
-              walls_of(cell->material_id()).empty())
+          if (!cell->is_locally_owned()
+              || walls_of(cell->material_id()).empty())
             continue;
           cell->get_dof_indices(dof_indices);
           for (unsigned int i = 0; i < n_dofs; ++i)
@@ -535,14 +532,15 @@ namespace pneuma
                                     const unsigned int c,
                                     const double       level) const
     {
-      const auto        &fe     = dof_handler->get_fe();
-      const unsigned int n_dofs = fe.n_dofs_per_cell();
-      const QGauss<2>    quadrature(degree + 1);
-      FEValues<2, 3>     fe_values(*mapping, fe, quadrature, wall_flags);
+      const auto           &fe     = dof_handler->get_fe();
+      const unsigned int    n_dofs = fe.n_dofs_per_cell();
+      const QGauss<2>       quadrature(degree + 1);
+      FEValues<2, 3>        fe_values(*mapping, fe, quadrature, wall_flags);
       FreeSurfaceQuadrature free_surface(degree, degree + 2);
       FEValues<2, 3>        support_values(*mapping,
                                     fe,
-                                    Quadrature<2>(free_surface.support_points()),
+                                    Quadrature<2>(
+                                      free_surface.support_points()),
                                     update_values | update_quadrature_points);
       const FEValuesExtractors::Vector displacement(0);
       std::vector<Tensor<1, 3>> u_support(free_surface.support_points().size());
@@ -567,8 +565,8 @@ namespace pneuma
               support_values[displacement].get_function_values(u, u_support);
               for (unsigned int k = 0; k < psi.size(); ++k)
                 psi[k] =
-                  height(support_values.quadrature_point(k) + u_support[k]) -
-                  level;
+                  height(support_values.quadrature_point(k) + u_support[k])
+                  - level;
               const auto at = free_surface.classify(psi);
               if (at == FreeSurfaceQuadrature::Location::dry)
                 continue;
@@ -577,8 +575,8 @@ namespace pneuma
               for (unsigned int i = 0; i < n_dofs; ++i)
                 local_u[i] = u[dof_indices[i]];
               const auto [x_mean, n_mean] = cell_centre_and_normal(fe_values);
-              const double s              = wall_sign(
-                geometry, parameters.chambers[c], rs, x_mean, n_mean);
+              const double s =
+                wall_sign(geometry, parameters.chambers[c], rs, x_mean, n_mean);
               integrate_wetted(at,
                                free_surface,
                                *mapping,
@@ -604,7 +602,8 @@ namespace pneuma
       const auto                      &fe = dof_handler->get_fe();
       FEValues<2, 3>                   values(*mapping,
                             fe,
-                            Quadrature<2>(fe.base_element(0).get_unit_support_points()),
+                            Quadrature<2>(
+                              fe.base_element(0).get_unit_support_points()),
                             update_values | update_quadrature_points);
       const FEValuesExtractors::Vector displacement(0);
       std::vector<Tensor<1, 3>>        u_q(values.n_quadrature_points);
@@ -618,9 +617,10 @@ namespace pneuma
                 values[displacement].get_function_values(u, u_q);
                 for (unsigned int k = 0; k < u_q.size(); ++k)
                   {
-                    const double z = height(values.quadrature_point(k) + u_q[k]);
-                    lo             = std::min(lo, z);
-                    hi             = std::max(hi, z);
+                    const double z =
+                      height(values.quadrature_point(k) + u_q[k]);
+                    lo = std::min(lo, z);
+                    hi = std::max(hi, z);
                   }
               }
       const MPI_Comm comm = dof_handler->get_communicator();
@@ -636,8 +636,8 @@ namespace pneuma
       FEValues<2, 3>  fe_values(*mapping, fe, quadrature, wall_flags);
       const FEValuesExtractors::Vector displacement(0);
       std::vector<Tensor<1, 3>>        u_q(quadrature.size());
-      const auto     &tria = dof_handler->get_triangulation();
-      ChamberCellData data;
+      const auto                      &tria = dof_handler->get_triangulation();
+      ChamberCellData                  data;
       data.chamber.reinit(tria.n_active_cells());
       data.wetted.reinit(tria.n_active_cells());
       data.pressure.reinit(tria.n_active_cells());
@@ -650,24 +650,25 @@ namespace pneuma
             continue;
           fe_values.reinit(cell);
           fe_values[displacement].get_function_values(u, u_q);
-          const auto   index = cell->active_cell_index();
-          unsigned int n_wet = 0;
-          double       p_net = 0.;
-          data.chamber[index] = walls.front().first + 1;
+          const auto   index          = cell->active_cell_index();
+          unsigned int n_wet          = 0;
+          double       p_net          = 0.;
+          data.chamber[index]         = walls.front().first + 1;
           const auto [x_mean, n_mean] = cell_centre_and_normal(fe_values);
-          const double s_first        = wall_sign(geometry,
-                                           parameters.chambers[walls.front().first],
-                                           walls.front().second,
-                                           x_mean,
-                                           n_mean);
+          const double s_first =
+            wall_sign(geometry,
+                      parameters.chambers[walls.front().first],
+                      walls.front().second,
+                      x_mean,
+                      n_mean);
           for (const auto &[c, rs] : walls)
             for (unsigned int q = 0; q < quadrature.size(); ++q)
               {
                 const double s = wall_sign(
                   geometry, parameters.chambers[c], rs, x_mean, n_mean);
                 const double depth =
-                  loads[c].level -
-                  height(fe_values.quadrature_point(q) + u_q[q]);
+                  loads[c].level
+                  - height(fe_values.quadrature_point(q) + u_q[q]);
                 double p = loads[c].gas_pressure;
                 if (loads[c].liquid && depth > 0.)
                   {

@@ -44,7 +44,7 @@ namespace pneuma
     }
 
     void
-    ChamberSubsystem::declare_parameters(ParameterHandler &prm,
+    ChamberSubsystem::declare_parameters(ParameterHandler  &prm,
                                          const InputLayout &layout)
     {
       parameters.declare_parameters(prm, layout);
@@ -90,7 +90,9 @@ namespace pneuma
     }
 
     std::string
-    ChamberSubsystem::begin_step(const double t, const LA::Vector &field, bool &)
+    ChamberSubsystem::begin_step(const double      t,
+                                 const LA::Vector &field,
+                                 bool &)
     {
       return system.begin_step(field, t);
     }
@@ -183,14 +185,16 @@ namespace pneuma
           const auto           &r = reports[c];
           const StatisticsGroup g{"c", "chambers", "chamber", c + 1};
           statistics.add(g, "pressure", "Pa", r.pressure, all);
-          statistics.add(g, "absolute_pressure", "Pa", r.absolute_pressure, report);
+          statistics.add(
+            g, "absolute_pressure", "Pa", r.absolute_pressure, report);
           statistics.add(g, "volume", "m^3", r.volume, all);
           statistics.add(g, "gas_volume", "m^3", r.gas_volume, report);
           statistics.add(g, "liquid_volume", "m^3", r.liquid_volume, all);
           statistics.add(g, "level", "m", r.level, all);
           statistics.add(g, "wetted_area", "m^2", r.wetted_area, report);
           statistics.add(g, "gas_amount", "m^3", r.gas_amount, report);
-          statistics.add(g, "pv_kappa", "Pa m^(3 kappa)", r.pv_kappa, Statistics::summary);
+          statistics.add(
+            g, "pv_kappa", "Pa m^(3 kappa)", r.pv_kappa, Statistics::summary);
         }
     }
 

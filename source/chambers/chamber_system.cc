@@ -37,15 +37,15 @@ namespace pneuma
     bool
     ChamberSystem::pressure_controlled(const Group &g) const
     {
-      return parameters.chambers[g.leader].control == GasControl::pressure &&
-             !g.sealed;
+      return parameters.chambers[g.leader].control == GasControl::pressure
+             && !g.sealed;
     }
 
     double
     ChamberSystem::prescribed_amount(const Group &g) const
     {
-      if (g.sealed ||
-          parameters.chambers[g.leader].control == GasControl::pressure)
+      if (g.sealed
+          || parameters.chambers[g.leader].control == GasControl::pressure)
         return g.amount;
       return curve(*parameters.chambers[g.leader].amount, time) * g.V0;
     }
@@ -53,17 +53,15 @@ namespace pneuma
     std::pair<double, double>
     ChamberSystem::gas_law(const Group &g, const double V_gas) const
     {
-      const GasUpdate &law  = parameters.chambers[g.leader].gas_law;
-      const double  amount = prescribed_amount(g);
+      const GasUpdate &law    = parameters.chambers[g.leader].gas_law;
+      const double     amount = prescribed_amount(g);
       return {law.pressure(V_gas, amount, parameters.ambient_pressure, g.old),
-              law.pressure_derivative(V_gas,
-                                      amount,
-                                      parameters.ambient_pressure,
-                                      g.old)};
+              law.pressure_derivative(
+                V_gas, amount, parameters.ambient_pressure, g.old)};
     }
 
     void
-    ChamberSystem::group_measures(const Group                         &g,
+    ChamberSystem::group_measures(const Group                        &g,
                                   const std::vector<ChamberMeasures> &m,
                                   double                             &V,
                                   double                             &V_l,
@@ -188,15 +186,15 @@ namespace pneuma
             if (!parameters.chambers[c].open && m[c].volume <= 0.)
               throw InputError(parameters.chambers[c].path + "/Regions",
                                "the walls face into the chamber (its volume "
-                               "is " +
-                                 std::to_string(m[c].volume) +
-                                 " m^3): flip the signs of its regions");
+                               "is "
+                                 + std::to_string(m[c].volume)
+                                 + " m^3): flip the signs of its regions");
           if (g.liquid)
             {
               const std::string error = predict_level(g, u);
               if (!error.empty())
-                throw InputError(parameters.chambers[g.leader].path +
-                                   "/Liquid/Volume",
+                throw InputError(parameters.chambers[g.leader].path
+                                   + "/Liquid/Volume",
                                  error.substr(error.find(':') + 2));
             }
           if (!g.gas)
@@ -258,11 +256,10 @@ namespace pneuma
           g.h     = lo - 1e-9 * (hi - lo);
           return "";
         }
-      g.empty = false;
+      g.empty     = false;
       double V_hi = volume(hi).first;
       if (def.open)
-        for (double step = std::max(hi - lo, 1e-3); V_hi < target;
-             step *= 2.)
+        for (double step = std::max(hi - lo, 1e-3); V_hi < target; step *= 2.)
           {
             hi   = lo + step;
             V_hi = volume(hi).first;
@@ -285,7 +282,7 @@ namespace pneuma
           if (std::abs(f) <= 1e-13 * target)
             break;
           (f < 0. ? a : b) = h;
-          double next = (A > 0.) ? h - f / A : 0.5 * (a + b);
+          double next      = (A > 0.) ? h - f / A : 0.5 * (a + b);
           if (!(next > a && next < b))
             next = 0.5 * (a + b);
           h = next;
@@ -313,19 +310,18 @@ namespace pneuma
       unknown_scale.assign(n_total, 1.);
       assembler.assemble(
         u, no_constraints(), loads(pack()), nullptr, nullptr, m, true);
-      force_reference = 0.;
-      const double p_a = parameters.ambient_pressure;
+      force_reference          = 0.;
+      const double p_a         = parameters.ambient_pressure;
       const double g_magnitude = parameters.gravity.norm();
       for (auto &g : groups)
         {
           double V, V_l, A, w;
           group_measures(g, m, V, V_l, A, w);
           // |q| (or |q_l| for a liquid alone): force per unit pressure.
-          LA::Vector q(g.gas || g.empty ? m[g.leader].q :
-                                          m[g.leader].q_liquid);
+          LA::Vector q(g.gas || g.empty ? m[g.leader].q : m[g.leader].q_liquid);
           for (unsigned int k = 1; k < g.members.size(); ++k)
-            q += g.gas || g.empty ? m[g.members[k]].q :
-                                    m[g.members[k]].q_liquid;
+            q +=
+              g.gas || g.empty ? m[g.members[k]].q : m[g.members[k]].q_liquid;
           const double q_norm = std::max(q.l2_norm(), 1e-300);
           const auto  &def    = parameters.chambers[g.leader];
           double       p_ref  = 0.;
@@ -335,12 +331,12 @@ namespace pneuma
                 g.p = curve(*def.pressure, t);
               else if (def.control != GasControl::volume)
                 g.p = gas_law(g, V - V_l).first - p_a;
-              p_ref = std::max(std::abs(g.p), 1e-2 * p_a);
+              p_ref                    = std::max(std::abs(g.p), 1e-2 * p_a);
               unknown_scale[g.p_index] = 1e3 * p_ref;
               residual_scale[g.p_index] =
-                def.control == GasControl::volume && !g.sealed ?
-                  q_norm * p_ref / std::max(V, 1e-300) :
-                  q_norm;
+                def.control == GasControl::volume && !g.sealed
+                  ? q_norm * p_ref / std::max(V, 1e-300)
+                  : q_norm;
             }
           if (g.liquid)
             {
@@ -382,10 +378,10 @@ namespace pneuma
             coupling.D(offset + j, k) = 0.;
         }
       // Rows and columns of this system in the coupling.
-      const auto B     = [&](const unsigned int j) -> LA::Vector & {
+      const auto B = [&](const unsigned int j) -> LA::Vector & {
         return coupling.B[offset + j];
       };
-      const auto C     = [&](const unsigned int j) -> LA::Vector & {
+      const auto C = [&](const unsigned int j) -> LA::Vector & {
         return coupling.C[offset + j];
       };
       const auto has_B = [&](const unsigned int j) {
@@ -394,7 +390,8 @@ namespace pneuma
       const auto has_C = [&](const unsigned int j) {
         return coupling.has_C[offset + j];
       };
-      const auto D = [&](const unsigned int j, const unsigned int k) -> double & {
+      const auto D = [&](const unsigned int j,
+                         const unsigned int k) -> double & {
         return coupling.D(offset + j, offset + k);
       };
       const double p_a         = parameters.ambient_pressure;
@@ -487,12 +484,12 @@ namespace pneuma
         {
           if (!g.gas)
             continue;
-          const auto  &def   = parameters.chambers[g.leader];
-          double       V_gas = 0.;
+          const auto &def   = parameters.chambers[g.leader];
+          double      V_gas = 0.;
           for (const auto c : g.members)
             V_gas += chamber_reports[c].gas_volume;
-          if (pressure_controlled(g) && def.seal_time >= 0. &&
-              t >= def.seal_time - 1e-12)
+          if (pressure_controlled(g) && def.seal_time >= 0.
+              && t >= def.seal_time - 1e-12)
             {
               g.sealed = true;
               g.amount = def.gas_law.amount(g.p + p_a, V_gas, p_a);
@@ -534,9 +531,8 @@ namespace pneuma
               ChamberReport &r = chamber_reports[c];
               r.volume         = parameters.chambers[c].open ? 0. : m[c].volume;
               r.liquid_volume  = m[c].liquid_volume;
-              r.gas_volume =
-                g.gas ? m[c].volume - m[c].liquid_volume : 0.;
-              r.wetted_area = m[c].wetted_area;
+              r.gas_volume     = g.gas ? m[c].volume - m[c].liquid_volume : 0.;
+              r.wetted_area    = m[c].wetted_area;
               if (g.liquid)
                 r.level = g.h;
               if (g.gas)
@@ -544,7 +540,7 @@ namespace pneuma
                   r.pressure          = g.p;
                   r.absolute_pressure = g.p + p_a;
                   r.gas_amount        = g.amount;
-                  r.pv_kappa = def.gas_law.law().invariant(
+                  r.pv_kappa          = def.gas_law.law().invariant(
                     {r.absolute_pressure, V_gas_group, g.amount});
                 }
             }

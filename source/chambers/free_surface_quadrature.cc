@@ -90,7 +90,8 @@ namespace pneuma
       if (*hi < -margin)
         return Location::wet;
       const InterpolatedLevelSet level_set(fe, psi);
-      const BoundingBox<2> unit(std::make_pair(Point<2>(0., 0.), Point<2>(1., 1.)));
+      const BoundingBox<2>       unit(
+        std::make_pair(Point<2>(0., 0.), Point<2>(1., 1.)));
       generator.generate(level_set, unit);
       if (wet_quadrature().size() == 0)
         return Location::dry;

@@ -41,7 +41,7 @@ namespace pneuma
     }
 
     void
-    ContactSubsystem::declare_parameters(ParameterHandler &prm,
+    ContactSubsystem::declare_parameters(ParameterHandler  &prm,
                                          const InputLayout &layout)
     {
       parameters.declare_parameters(prm, layout);
@@ -131,7 +131,10 @@ namespace pneuma
           const auto           &r = reports[k];
           const StatisticsGroup g{"contact", "contact", "pair", k + 1};
           statistics.add_count(g, "active_points", r.active_points, all);
-          statistics.add_count(g, "points", r.points, all & ~Statistics::history);
+          statistics.add_count(g,
+                               "points",
+                               r.points,
+                               all & ~Statistics::history);
           statistics.add(g, "total_force", "N", r.total_force, all);
           statistics.add_vector(g, "force", "N", r.force, all);
           statistics.add(g, "max_penetration", "m", r.max_penetration, all);

@@ -23,11 +23,12 @@ namespace pneuma
     {
       std::string out;
       for (unsigned int i = 0; i < s.size(); ++i)
-        if (s[i] == '_' && i + 2 < s.size() + 0 &&
-            std::isxdigit(static_cast<unsigned char>(s[i + 1])) &&
-            std::isxdigit(static_cast<unsigned char>(s[i + 2])))
+        if (s[i] == '_' && i + 2 < s.size() + 0
+            && std::isxdigit(static_cast<unsigned char>(s[i + 1]))
+            && std::isxdigit(static_cast<unsigned char>(s[i + 2])))
           {
-            out += static_cast<char>(std::stoi(s.substr(i + 1, 2), nullptr, 16));
+            out +=
+              static_cast<char>(std::stoi(s.substr(i + 1, 2), nullptr, 16));
             i += 2;
           }
         else
@@ -67,8 +68,9 @@ namespace pneuma
     bool
     starts_with_word(const std::string &line, const std::string &word)
     {
-      return line.size() > word.size() && line.compare(0, word.size(), word) == 0 &&
-             std::isspace(static_cast<unsigned char>(line[word.size()]));
+      return line.size() > word.size()
+             && line.compare(0, word.size(), word) == 0
+             && std::isspace(static_cast<unsigned char>(line[word.size()]));
     }
   } // namespace
 
@@ -92,7 +94,7 @@ namespace pneuma
           {
             throw InputError(file, std::string("not valid JSON: ") + e.what());
           }
-        std::vector<std::string>                                   stack;
+        std::vector<std::string>                                 stack;
         std::function<void(const boost::property_tree::ptree &)> walk =
           [&](const boost::property_tree::ptree &node) {
             for (const auto &[key, child] : node)
@@ -101,7 +103,8 @@ namespace pneuma
                 if (child.empty())
                   layout.values[join(stack, name)] = child.data();
                 else if (child.count("value") > 0)
-                  layout.values[join(stack, name)] = child.get<std::string>("value");
+                  layout.values[join(stack, name)] =
+                    child.get<std::string>("value");
                 else
                   {
                     layout.add_subsection(join(stack, name));
@@ -140,8 +143,8 @@ namespace pneuma
   void
   InputLayout::add_subsection(const std::string &path)
   {
-    if (std::find(subsection_paths.begin(), subsection_paths.end(), path) ==
-        subsection_paths.end())
+    if (std::find(subsection_paths.begin(), subsection_paths.end(), path)
+        == subsection_paths.end())
       subsection_paths.push_back(path);
   }
 
@@ -237,8 +240,8 @@ namespace pneuma
     std::vector<std::string> names;
     const std::string        prefix = parent + "/";
     for (const auto &p : subsection_paths)
-      if (p.compare(0, prefix.size(), prefix) == 0 &&
-          p.find('/', prefix.size()) == std::string::npos)
+      if (p.compare(0, prefix.size(), prefix) == 0
+          && p.find('/', prefix.size()) == std::string::npos)
         names.push_back(p.substr(prefix.size()));
     return names;
   }
@@ -256,8 +259,8 @@ namespace pneuma
         n = 0;
         try
           {
-            const int v =
-              Utilities::string_to_int(Utilities::trim(value(count_entry, "0")));
+            const int v = Utilities::string_to_int(
+              Utilities::trim(value(count_entry, "0")));
             n = v > 0 ? v : 0;
           }
         catch (...)
@@ -278,10 +281,10 @@ namespace pneuma
                 }
               check_input(k >= 1 && k <= n,
                           parent + "/" + name,
-                          "is not used: " + count_entry + " is " +
-                            std::to_string(n) + " (numbered 1.." +
-                            std::to_string(n) +
-                            "); raise the count or remove the subsection");
+                          "is not used: " + count_entry + " is "
+                            + std::to_string(n) + " (numbered 1.."
+                            + std::to_string(n)
+                            + "); raise the count or remove the subsection");
             }
       }
     std::vector<std::string> names;
@@ -304,11 +307,13 @@ namespace pneuma
                     parent + "/" + name,
                     "unknown subsection: expected '" + prefix + " <id>'");
         const std::string id = name.substr(prefix.size() + 1);
-        check_input(!id.empty() &&
-                      std::all_of(id.begin(),
-                                  id.end(),
-                                  [](const char c) { return std::isdigit(c); }) &&
-                      id.size() < 10,
+        check_input(!id.empty()
+                      && std::all_of(id.begin(),
+                                     id.end(),
+                                     [](const char c) {
+                                       return std::isdigit(c);
+                                     })
+                      && id.size() < 10,
                     parent + "/" + name,
                     "the id must be a non-negative integer (a Gmsh physical "
                     "surface tag)");

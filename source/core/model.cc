@@ -419,9 +419,8 @@ namespace pneuma
     // when there is one: stiff cables must not slow its continuation).
     for (const auto &s : subsystems)
       {
-        const double shift =
-          s->initial_shift(factor, range(*s), tangent, laplacian, external,
-                           update_constraints);
+        const double shift = s->initial_shift(
+          factor, range(*s), tangent, laplacian, external, update_constraints);
         if (shift > 0.)
           return shift;
       }
@@ -499,7 +498,12 @@ namespace pneuma
     for (unsigned int b = 0; b < squares.size(); ++b)
       if (!on_border[b])
         field_part[b] = squares[b];
-    { auto in_ = field_part; Utilities::MPI::sum(ArrayView<const double>(in_), comm, ArrayView<double>(field_part)); }
+    {
+      auto in_ = field_part;
+      Utilities::MPI::sum(ArrayView<const double>(in_),
+                          comm,
+                          ArrayView<double>(field_part));
+    }
     for (unsigned int b = 0; b < squares.size(); ++b)
       squares[b] = std::sqrt(on_border[b] ? squares[b] : field_part[b]);
     return squares;

@@ -100,15 +100,15 @@ namespace pneuma
   void
   OutputWriter::prepare(const MPI_Comm comm)
   {
-    root = Utilities::MPI::this_mpi_process(comm) == 0;
+    root    = Utilities::MPI::this_mpi_process(comm) == 0;
     bool ok = true;
     if (root)
       {
         std::error_code ec;
         std::filesystem::create_directories(output_directory, ec);
-        history = std::make_unique<std::ofstream>(output_directory +
-                                                  "/history.csv");
-        ok      = static_cast<bool>(*history);
+        history =
+          std::make_unique<std::ofstream>(output_directory + "/history.csv");
+        ok = static_cast<bool>(*history);
       }
     ok = Utilities::MPI::broadcast(comm, ok, 0);
     check_input(ok,
@@ -164,8 +164,8 @@ namespace pneuma
       return;
     std::ofstream json(output_directory + "/summary.json");
     json << "{";
-    bool first = true;
-    const auto key = [&](const std::string &k) -> std::ostream & {
+    bool       first = true;
+    const auto key   = [&](const std::string &k) -> std::ostream   &{
       json << (first ? "\n  " : ",\n  ") << json_string(k) << ": ";
       first = false;
       return json;
@@ -182,14 +182,14 @@ namespace pneuma
             if (e.name == "exit_code")
               key("message") << json_string(message);
           }
-        else if (std::find(arrays.begin(), arrays.end(), e.group.array) ==
-                 arrays.end())
+        else if (std::find(arrays.begin(), arrays.end(), e.group.array)
+                 == arrays.end())
           arrays.push_back(e.group.array);
       }
     for (const auto &array : arrays)
       {
         std::map<unsigned int, std::vector<const Statistics::Entry *>> items;
-        std::string                                                   index_key;
+        std::string index_key;
         for (const auto &e : row.entries())
           if ((e.uses & Statistics::summary) && e.group.array == array)
             {
@@ -260,9 +260,9 @@ namespace pneuma
         std::snprintf(buffer,
                       sizeof(buffer),
                       "%.4e",
-                      std::abs(v) < 1e-9 * scale[e.group.array + "/" + e.name] ?
-                        0. :
-                        v);
+                      std::abs(v) < 1e-9 * scale[e.group.array + "/" + e.name]
+                        ? 0.
+                        : v);
       return std::string(buffer);
     };
     std::ofstream out("output");
@@ -281,16 +281,16 @@ namespace pneuma
           }
         else if (std::find(instances.begin(),
                            instances.end(),
-                           std::make_pair(e.group.array, e.group.index)) ==
-                 instances.end())
+                           std::make_pair(e.group.array, e.group.index))
+                 == instances.end())
           instances.emplace_back(e.group.array, e.group.index);
       }
     for (const auto &[array, index] : instances)
       {
         bool first = true;
         for (const auto &e : row.entries())
-          if ((e.uses & Statistics::test) && e.group.array == array &&
-              e.group.index == index)
+          if ((e.uses & Statistics::test) && e.group.array == array
+              && e.group.index == index)
             {
               if (first)
                 out << e.group.index_key << " " << index << ":";

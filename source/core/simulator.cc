@@ -36,17 +36,17 @@ namespace pneuma
     history_row(const solvers::PathStep       &step,
                 const solvers::BorderedVector &state);
 
-    MPI_Comm                 comm;
-    InputLayout              layout;
-    ConditionalOStream       pcout;
+    MPI_Comm           comm;
+    InputLayout        layout;
+    ConditionalOStream pcout;
     /// The model (whose subsystems check the input layout) before the
     /// timer: no TimerOutput is alive while a construction error
     /// propagates.
-    Model                    model;
-    TimerOutput              timer;
-    Timer                    wall_clock;
-    solvers::StaticLoadPath  path;
-    OutputWriter             output;
+    Model                   model;
+    TimerOutput             timer;
+    Timer                   wall_clock;
+    solvers::StaticLoadPath path;
+    OutputWriter            output;
     /// The last converged state of run_once().
     solvers::BorderedVector last_state;
   };
@@ -158,8 +158,12 @@ namespace pneuma
     const auto run = StatisticsGroup::run();
     row.add_count(run, "step", step.step, Statistics::history);
     row.add(run, "time", "", step.time, Statistics::history);
-    row.add_count(run, "newton_iterations", step.iterations, Statistics::history);
-    row.add(run, "wall_seconds", "s", wall_clock.wall_time(), Statistics::history);
+    row.add_count(run,
+                  "newton_iterations",
+                  step.iterations,
+                  Statistics::history);
+    row.add(
+      run, "wall_seconds", "s", wall_clock.wall_time(), Statistics::history);
     model.add_statistics(row, state);
     row.reduce(comm);
     return row;
@@ -188,9 +192,10 @@ namespace pneuma
                               const solvers::BorderedVector &state) {
       result.history.push_back(history_row(step, state));
       output.history_row(result.history.back());
-      if (output.write_vtu() &&
-          (step.step == 0 ||
-           (output.vtu_interval() > 0 && step.step % output.vtu_interval() == 0)))
+      if (output.write_vtu()
+          && (step.step == 0
+              || (output.vtu_interval() > 0
+                  && step.step % output.vtu_interval() == 0)))
         write_vtu(step.step, step.time, state);
     };
     const solvers::PathResult path_result =
@@ -206,15 +211,24 @@ namespace pneuma
     result.step_iterations       = path_result.step_iterations;
     result.last_residual_history = path_result.last_residual_history;
 
-    Statistics &row = result.summary;
-    const auto  run = StatisticsGroup::run();
+    Statistics            &row    = result.summary;
+    const auto             run    = StatisticsGroup::run();
     constexpr unsigned int counts = Statistics::summary;
-    row.add_count(run, "exit_code", result.exit_code, counts | Statistics::test);
+    row.add_count(run,
+                  "exit_code",
+                  result.exit_code,
+                  counts | Statistics::test);
     row.add_count(run, "dofs", model.n_dofs(), counts | Statistics::test);
-    row.add_count(run, "mpi_ranks", Utilities::MPI::n_mpi_processes(comm), counts);
+    row.add_count(run,
+                  "mpi_ranks",
+                  Utilities::MPI::n_mpi_processes(comm),
+                  counts);
     row.add_count(run, "steps", path_result.steps, counts);
     row.add_count(run, "cutbacks", path_result.cutbacks, counts);
-    row.add_count(run, "newton_iterations", path_result.newton_iterations, counts);
+    row.add_count(run,
+                  "newton_iterations",
+                  path_result.newton_iterations,
+                  counts);
     row.add_count(run, "linear_solves", model.n_linear_solves(), counts);
     row.add_count(run,
                   "factorizations",
@@ -224,11 +238,8 @@ namespace pneuma
                   "krylov_iterations",
                   model.linear_solver().n_krylov_iterations(),
                   counts);
-    row.add(run,
-            "final_time",
-            "",
-            path_result.final_time,
-            counts | Statistics::test);
+    row.add(
+      run, "final_time", "", path_result.final_time, counts | Statistics::test);
     model.add_statistics(row, path_result.state);
     row.add(run, "wall_seconds", "s", wall_clock.wall_time(), counts);
     row.reduce(comm);

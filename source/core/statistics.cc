@@ -1,5 +1,5 @@
-#include <deal.II/base/exceptions.h>
 #include <deal.II/base/array_view.h>
+#include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 
 #include <pneuma/core/statistics.h>
@@ -81,14 +81,26 @@ namespace pneuma
           continue;
         switch (kind)
           {
-            case Reduction::sum:
-              { auto in_ = values; Utilities::MPI::sum(ArrayView<const double>(in_), comm, ArrayView<double>(values)); }
+              case Reduction::sum: {
+                auto in_ = values;
+                Utilities::MPI::sum(ArrayView<const double>(in_),
+                                    comm,
+                                    ArrayView<double>(values));
+              }
               break;
-            case Reduction::max:
-              { auto in_ = values; Utilities::MPI::max(ArrayView<const double>(in_), comm, ArrayView<double>(values)); }
+              case Reduction::max: {
+                auto in_ = values;
+                Utilities::MPI::max(ArrayView<const double>(in_),
+                                    comm,
+                                    ArrayView<double>(values));
+              }
               break;
-            case Reduction::min:
-              { auto in_ = values; Utilities::MPI::min(ArrayView<const double>(in_), comm, ArrayView<double>(values)); }
+              case Reduction::min: {
+                auto in_ = values;
+                Utilities::MPI::min(ArrayView<const double>(in_),
+                                    comm,
+                                    ArrayView<double>(values));
+              }
               break;
             default:
               values = Utilities::MPI::broadcast(comm, values, 0);
@@ -108,9 +120,9 @@ namespace pneuma
   Statistics::has(const std::string &column) const
   {
     for (const auto &e : table)
-      if (e.column() == column || (e.values.size() == 3 &&
-                                   e.column().substr(0, e.column().size() - 2) ==
-                                     column))
+      if (e.column() == column
+          || (e.values.size() == 3
+              && e.column().substr(0, e.column().size() - 2) == column))
         return true;
     return false;
   }

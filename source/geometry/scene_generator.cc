@@ -14,9 +14,9 @@ namespace pneuma
                         "closed cylinder",
                         Patterns::Selection(registry.names() + "|none"),
                         "Membrane surface; its constants are in the "
-                        "subsection of its name. " +
-                          registry.descriptions() +
-                          "; none: no membrane (a scene of cables only).");
+                        "subsection of its name. "
+                          + registry.descriptions()
+                          + "; none: no membrane (a scene of cables only).");
       prm.leave_subsection();
     }
 

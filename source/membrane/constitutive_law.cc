@@ -24,8 +24,8 @@ namespace pneuma
                             slot->law,
                             "Membrane law of the cells with this material id "
                             "(Gmsh physical surface tag); its constants are "
-                            "in the subsection of its name. " +
-                              laws.descriptions() + ".",
+                            "in the subsection of its name. "
+                              + laws.descriptions() + ".",
                             Patterns::Selection(laws.names()));
           prm.add_parameter("Thickness",
                             slot->thickness,
@@ -53,8 +53,8 @@ namespace pneuma
           const std::string path = "Materials/" + name;
           check_input(slot->thickness > 0.,
                       path + "/Thickness",
-                      "must be positive, got " +
-                        std::to_string(slot->thickness));
+                      "must be positive, got "
+                        + std::to_string(slot->thickness));
           prm.enter_subsection(name);
           RegionMaterial m;
           m.law_name  = slot->law;
@@ -72,17 +72,18 @@ namespace pneuma
     MaterialRegions::operator[](const types::material_id id) const
     {
       const auto it = regions.find(id);
-      check_input(it != regions.end(),
-                  "Materials/Region " + std::to_string(id),
-                  "the mesh has cells with material id " + std::to_string(id) +
-                    " but the input has no such subsection (regions given: " +
-                    [this]() {
-                      std::string s;
-                      for (const auto &[i, m] : regions)
-                        s += (s.empty() ? "" : ", ") + std::to_string(i);
-                      return s;
-                    }() +
-                    ")");
+      check_input(
+        it != regions.end(),
+        "Materials/Region " + std::to_string(id),
+        "the mesh has cells with material id " + std::to_string(id)
+          + " but the input has no such subsection (regions given: " +
+          [this]() {
+            std::string s;
+            for (const auto &[i, m] : regions)
+              s += (s.empty() ? "" : ", ") + std::to_string(i);
+            return s;
+          }()
+          + ")");
       return it->second;
     }
 

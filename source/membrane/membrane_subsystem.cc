@@ -39,8 +39,8 @@ namespace pneuma
     bool
     MembraneSubsystem::is_active(const InputLayout &layout)
     {
-      return layout.is_template() ||
-             layout.value("Geometry/Type", "closed cylinder") != "none";
+      return layout.is_template()
+             || layout.value("Geometry/Type", "closed cylinder") != "none";
     }
 
     void
@@ -124,17 +124,17 @@ namespace pneuma
           for (const auto id : all_ids)
             (void)materials[id];
           for (const auto id : materials.ids())
-            check_input(std::find(all_ids.begin(), all_ids.end(), id) !=
-                          all_ids.end(),
+            check_input(std::find(all_ids.begin(), all_ids.end(), id)
+                          != all_ids.end(),
                         "Materials/Region " + std::to_string(id),
-                        "no cell of the mesh has material id " +
-                          std::to_string(id));
+                        "no cell of the mesh has material id "
+                          + std::to_string(id));
           for (const auto id : model.loads().pressure_regions())
-            check_input(std::find(all_ids.begin(), all_ids.end(), id) !=
-                          all_ids.end(),
+            check_input(std::find(all_ids.begin(), all_ids.end(), id)
+                          != all_ids.end(),
                         "Loads/Pressure regions",
-                        "the mesh has no cells in region " +
-                          std::to_string(id));
+                        "the mesh has no cells in region "
+                          + std::to_string(id));
         }
       dofs.distribute_dofs(*fe);
       owned_dofs    = dofs.locally_owned_dofs();
@@ -194,22 +194,23 @@ namespace pneuma
     }
 
     void
-    MembraneSubsystem::add_update_constraints(AffineConstraints<double> &c) const
+    MembraneSubsystem::add_update_constraints(
+      AffineConstraints<double> &c) const
     {
-      boundary_conditions.add_update_constraints(dofs,
-                                                 rigid_regions.slave_dofs(),
-                                                 rigid_regions.plate_master_dofs(),
-                                                 junction_ties.copies(),
-                                                 c);
+      boundary_conditions.add_update_constraints(
+        dofs,
+        rigid_regions.slave_dofs(),
+        rigid_regions.plate_master_dofs(),
+        junction_ties.copies(),
+        c);
       share_constraint_lines(c, shared_masters(), model.locally_owned(), comm);
     }
 
     void
     MembraneSubsystem::finish_setup()
     {
-      assembler = std::make_unique<MembraneAssembler>(scene,
-                                                      materials,
-                                                      model.loads());
+      assembler =
+        std::make_unique<MembraneAssembler>(scene, materials, model.loads());
       assembler->reinit(*mapping_cache, dofs, fe_degree);
       boundary_conditions.check_against_mesh(dofs);
       // Junction copies are tied vertex by vertex: both sides of a junction
@@ -298,11 +299,11 @@ namespace pneuma
 
     double
     MembraneSubsystem::initial_shift(
-      const double                     factor,
-      const UnknownRange              &range,
-      const LA::SparseMatrix          &K,
-      const LA::SparseMatrix          &L,
-      const LA::Vector                &,
+      const double            factor,
+      const UnknownRange     &range,
+      const LA::SparseMatrix &K,
+      const LA::SparseMatrix &L,
+      const LA::Vector &,
       const AffineConstraints<double> &constraints) const
     {
       // mean(diag K)/mean(diag L) over the unconstrained membrane dofs:
@@ -310,8 +311,8 @@ namespace pneuma
       // continuation down).
       double k_sum = 0., m_sum = 0.;
       for (const auto i : model.locally_owned())
-        if (i >= range.first && i < range.first + range.size &&
-            !constraints.is_constrained(i))
+        if (i >= range.first && i < range.first + range.size
+            && !constraints.is_constrained(i))
           {
             k_sum += std::abs(K.diag_element(i));
             m_sum += L.diag_element(i);
@@ -415,8 +416,8 @@ namespace pneuma
           for (const auto &cell : dofs.active_cell_iterators())
             if (cell->is_locally_owned() && !found)
               for (const auto v : cell->vertex_indices())
-                if (cell->vertex(v).distance(p) <= global_min * (1 + 1e-12) &&
-                    owned_dofs.is_element(cell->vertex_dof_index(v, 0)))
+                if (cell->vertex(v).distance(p) <= global_min * (1 + 1e-12)
+                    && owned_dofs.is_element(cell->vertex_dof_index(v, 0)))
                   {
                     for (unsigned int c = 0; c < 3; ++c)
                       {
@@ -451,7 +452,7 @@ namespace pneuma
       // the independent dofs: at a prescribed dof, f_int - f_ext is the
       // force the support exerts on the structure (the reaction). The
       // loads of the cell terms (chambers) count as applied loads.
-      LA::Vector residual = model.make_field(), ext = model.make_field();
+      LA::Vector      residual = model.make_field(), ext = model.make_field();
       AssemblyRequest request;
       request.time     = model.current_time;
       request.residual = &residual;
@@ -471,8 +472,8 @@ namespace pneuma
           for (const auto i : component_dofs)
             {
               applied[c] += ext[i];
-              if (constraints.is_constrained(i) &&
-                  constraints.get_constraint_entries(i)->empty())
+              if (constraints.is_constrained(i)
+                  && constraints.get_constraint_entries(i)->empty())
                 reaction[c] += residual[i];
             }
           reaction[c] = Utilities::MPI::sum(reaction[c], comm);
@@ -493,8 +494,10 @@ namespace pneuma
                                Statistics::summary | Statistics::test);
           std::array<double, 3> reaction, applied;
           compute_reactions(field, reaction, applied);
-          statistics.add_vector(run, "reaction", "N", reaction, Statistics::summary);
-          statistics.add_vector(run, "applied_load", "N", applied, Statistics::summary);
+          statistics.add_vector(
+            run, "reaction", "N", reaction, Statistics::summary);
+          statistics.add_vector(
+            run, "applied_load", "N", applied, Statistics::summary);
         }
       if (scene.is_closed())
         {
@@ -516,11 +519,8 @@ namespace pneuma
             if (monitor_dofs[m][c] != numbers::invalid_dof_index)
               u[c] = field[monitor_dofs[m][c]];
           const StatisticsGroup group{"m", "monitor_points", "monitor", m};
-          statistics.add_vector(group,
-                                "position",
-                                "m",
-                                monitor_positions[m],
-                                Statistics::summary);
+          statistics.add_vector(
+            group, "position", "m", monitor_positions[m], Statistics::summary);
           statistics.add_vector(
             group, "u", "m", u, Statistics::all, Statistics::Reduction::sum);
         }
@@ -535,15 +535,16 @@ namespace pneuma
       output = std::make_unique<DataOut<2, 3>>();
       output->attach_dof_handler(dofs);
       const std::vector<std::string> names(3, "displacement");
-      const std::vector<DataComponentInterpretation::DataComponentInterpretation>
-        interpretation(3,
-                       DataComponentInterpretation::component_is_part_of_vector);
+      const std::vector<
+        DataComponentInterpretation::DataComponentInterpretation>
+        interpretation(
+          3, DataComponentInterpretation::component_is_part_of_vector);
       output->add_data_vector(field,
                               names,
                               DataOut<2, 3>::type_dof_data,
                               interpretation);
-      const postprocess::CellFields fields =
-        postprocess::membrane_cell_fields(*mapping_cache, dofs, materials, field);
+      const postprocess::CellFields fields = postprocess::membrane_cell_fields(
+        *mapping_cache, dofs, materials, field);
       output_cell_data.clear();
       output_cell_data.reserve(fields.names.size() + 1);
       for (unsigned int i = 0; i < fields.names.size(); ++i)
@@ -562,7 +563,7 @@ namespace pneuma
     MembraneSubsystem::write_output_files(const std::string &directory,
                                           const unsigned int step,
                                           const double       t,
-                                          const LA::Vector  &)
+                                          const LA::Vector &)
     {
       output->build_patches(*mapping_cache,
                             fe_degree,

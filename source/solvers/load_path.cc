@@ -45,7 +45,7 @@ namespace pneuma
       BorderedVector last(result.state);
       // Bergan's current stiffness parameter, per stage.
       double       stiffness_reference = 0., stiffness = 1.;
-      unsigned int stiffness_stage     = numbers::invalid_unsigned_int;
+      unsigned int stiffness_stage = numbers::invalid_unsigned_int;
 
       while (!stepping.finished(t))
         {
@@ -54,25 +54,22 @@ namespace pneuma
           last = result.state;
           out << "Step " << result.steps + 1 << "  t = " << t_new
               << "  dt = " << t_new - t_old << std::endl;
-          const std::string impossible =
-            model.begin_step(t_new, result.state);
+          const std::string impossible = model.begin_step(t_new, result.state);
           if (!impossible.empty())
             {
               result.exit_code = 2;
-              result.message   = impossible +
-                               ". The last converged state (t = " +
-                               std::to_string(t_old) + ") is written.";
+              result.message   = impossible + ". The last converged state (t = "
+                               + std::to_string(t_old) + ") is written.";
               result.state = last;
               model.reject_step(t_old);
               break;
             }
 
           // 2. Solve, and check that the state is admissible.
-          auto newton =
-            newton_solver.solve(model,
-                                result.state,
-                                out,
-                                last.field.linfty_norm() == 0.);
+          auto newton = newton_solver.solve(model,
+                                            result.state,
+                                            out,
+                                            last.field.linfty_norm() == 0.);
           result.newton_iterations += newton.iterations;
           if (newton.converged)
             {
@@ -90,14 +87,14 @@ namespace pneuma
               ++result.cutbacks;
               result.state = last;
               model.reject_step(t_old);
-              dt                 = stepping.cut(t_new - t_old);
+              dt = stepping.cut(t_new - t_old);
               out << "  Newton failed (" << newton.failure_reason
                   << "); cutting back to dt = " << dt << std::endl;
               if (dt < stepping.minimum())
                 {
                   std::ostringstream msg;
-                  msg << "the load step could not be completed at t = "
-                      << t_old << " even with the minimum increment "
+                  msg << "the load step could not be completed at t = " << t_old
+                      << " even with the minimum increment "
                       << stepping.minimum() << " (" << newton.failure_reason
                       << ")";
                   if (stiffness < limit_point_stiffness)

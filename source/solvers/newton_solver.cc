@@ -241,9 +241,9 @@ namespace pneuma
             }
           if (it >= phase.max_iterations)
             {
-              result.failure_reason = "no convergence in " +
-                                      std::to_string(phase.max_iterations) +
-                                      " iterations";
+              result.failure_reason = "no convergence in "
+                                      + std::to_string(phase.max_iterations)
+                                      + " iterations";
               return false;
             }
 
@@ -272,8 +272,8 @@ namespace pneuma
               result.failure_reason = "linear solver failed";
               return false;
             }
-          if (pure && du_norm <= update_tolerance * u.l2_norm() &&
-              r_norm <= floor_update * tolerance)
+          if (pure && du_norm <= update_tolerance * u.l2_norm()
+              && r_norm <= floor_update * tolerance)
             {
               if (print_table)
                 out << "    " << std::setw(4) << result.iterations
@@ -294,10 +294,10 @@ namespace pneuma
               u_trial = u;
               u_trial.add(step.alpha, du);
               step.norm = evaluate(u_trial, trial);
-              if (!line_search ||
-                  (std::isfinite(step.norm) &&
-                   (step.norm <= (1. - armijo * step.alpha) * r_norm ||
-                    step.norm <= tolerance)))
+              if (!line_search
+                  || (std::isfinite(step.norm)
+                      && (step.norm <= (1. - armijo * step.alpha) * r_norm
+                          || step.norm <= tolerance)))
                 {
                   step.accepted = true;
                   break;
@@ -316,9 +316,10 @@ namespace pneuma
                   << step.norm / r_ref;
               const auto blocks = problem.block_norms(trial);
               for (unsigned int b = 0; b < blocks.size(); ++b)
-                out << "  " << blocks[b] / (block_reference[b] > 0. ?
-                                              block_reference[b] :
-                                              r_ref);
+                out << "  "
+                    << blocks[b]
+                         / (block_reference[b] > 0. ? block_reference[b]
+                                                    : r_ref);
               out << "  "
                   << step.alpha * du_norm / std::max(u_trial.l2_norm(), 1e-300)
                   << "  " << phase.shift << "  " << std::defaultfloat
@@ -346,8 +347,8 @@ namespace pneuma
               r_norm = evaluate(u, residual);
               if (print_table)
                 out << "    (watchdog: back to |r|/|r_ref| = "
-                    << std::scientific << std::setprecision(3)
-                    << r_norm / r_ref << std::defaultfloat << ")\n";
+                    << std::scientific << std::setprecision(3) << r_norm / r_ref
+                    << std::defaultfloat << ")\n";
               continue;
             }
           if (pure)
@@ -367,9 +368,9 @@ namespace pneuma
       problem.assemble(u, r); // the scale is taken from K at the start
       const double initial = problem.initial_shift(shift_factor);
       Phase        phase;
-      phase.shift          = initial;
-      phase.max_iterations = S::inner_iterations;
-      phase.tolerance      = S::inner_tolerance;
+      phase.shift           = initial;
+      phase.max_iterations  = S::inner_iterations;
+      phase.tolerance       = S::inner_tolerance;
       unsigned int failures = 0;
       while (result.iterations < S::budget * max_iter)
         {
@@ -385,8 +386,8 @@ namespace pneuma
               continue;
             }
           problem.assemble(u, r);
-          if (r.l2_norm() <= S::switch_ratio * r_ref ||
-              phase.shift < S::min_shift * initial)
+          if (r.l2_norm() <= S::switch_ratio * r_ref
+              || phase.shift < S::min_shift * initial)
             break;
           phase.shift *= S::shrink;
         }
@@ -426,8 +427,8 @@ namespace pneuma
           result.converged = true;
           return result;
         }
-      if (shift_factor == 0. || !allow_continuation ||
-          result.iterations >= max_iter)
+      if (shift_factor == 0. || !allow_continuation
+          || result.iterations >= max_iter)
         return result;
 
       // 2. Continuation from the start of the step, 3. pure Newton from

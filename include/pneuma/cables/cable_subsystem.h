@@ -35,7 +35,7 @@ namespace pneuma
         return "cables";
       }
       void
-      declare_parameters(ParameterHandler &prm,
+      declare_parameters(ParameterHandler  &prm,
                          const InputLayout &layout) override;
       void
       parse_parameters(ParameterHandler &prm) override;
@@ -54,15 +54,17 @@ namespace pneuma
       add_regularisation(const AffineConstraints<double> &constraints,
                          LA::SparseMatrix                &L) const override;
       void
-      add_near_null_space(const IndexSet                   &owned,
-                          std::vector<std::vector<double>> &modes) const override;
+      add_near_null_space(
+        const IndexSet                   &owned,
+        std::vector<std::vector<double>> &modes) const override;
       double
-      initial_shift(const double                     factor,
-                    const UnknownRange              &range,
-                    const LA::SparseMatrix          &K,
-                    const LA::SparseMatrix          &L,
-                    const LA::Vector                &external,
-                    const AffineConstraints<double> &constraints) const override;
+      initial_shift(
+        const double                     factor,
+        const UnknownRange              &range,
+        const LA::SparseMatrix          &K,
+        const LA::SparseMatrix          &L,
+        const LA::Vector                &external,
+        const AffineConstraints<double> &constraints) const override;
 
       void
       set_prescribed_values(const double t, LA::Vector &field) const override;
@@ -75,7 +77,8 @@ namespace pneuma
       double
       force_scale(const LA::Vector &field) const override;
       void
-      add_statistics(Statistics &statistics, const LA::Vector &field) const override;
+      add_statistics(Statistics       &statistics,
+                     const LA::Vector &field) const override;
       void
       write_output_files(const std::string &directory,
                          const unsigned int step,

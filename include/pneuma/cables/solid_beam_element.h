@@ -50,13 +50,13 @@ namespace pneuma
        * given, receives the cell averages of output_names().
        */
       void
-      cell_terms(const FEValues<1, 3>  &fe_values,
-                 const Tensor<1, 3>    &tangent,
-                 const Vector<double>  &local_reference,
-                 const Vector<double>  &local_u,
-                 FullMatrix<double>    *cell_matrix,
-                 Vector<double>        *cell_residual,
-                 std::vector<double>   *output) const;
+      cell_terms(const FEValues<1, 3> &fe_values,
+                 const Tensor<1, 3>   &tangent,
+                 const Vector<double> &local_reference,
+                 const Vector<double> &local_u,
+                 FullMatrix<double>   *cell_matrix,
+                 Vector<double>       *cell_residual,
+                 std::vector<double>  *output) const;
 
       /// Cell fields written to the VTU (axial force, moments, stretches).
       static std::vector<std::string>

@@ -29,9 +29,9 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_values.h>
-#include <deal.II/lac/full_matrix.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <pneuma/chambers/chamber_parameters.h>
@@ -51,9 +51,9 @@ namespace pneuma
     /// What acts on the walls of one chamber.
     struct ChamberLoad
     {
-      bool   gas          = true; ///< a gas acts (else the gas pass is
-                                  ///< skipped when only loads are needed)
-      double gas_pressure = 0.;   ///< gauge [Pa], on all walls
+      bool gas = true;          ///< a gas acts (else the gas pass is
+                                ///< skipped when only loads are needed)
+      double gas_pressure = 0.; ///< gauge [Pa], on all walls
       bool   liquid       = false;
       double level        = 0.; ///< free-surface height h [m]
       double density      = 0.;

@@ -40,7 +40,7 @@ namespace pneuma
         return "chambers";
       }
       void
-      declare_parameters(ParameterHandler &prm,
+      declare_parameters(ParameterHandler  &prm,
                          const InputLayout &layout) override;
       void
       parse_parameters(ParameterHandler &prm) override;
@@ -74,7 +74,8 @@ namespace pneuma
       double
       force_scale(const LA::Vector &field) const override;
       void
-      add_statistics(Statistics &statistics, const LA::Vector &field) const override;
+      add_statistics(Statistics       &statistics,
+                     const LA::Vector &field) const override;
       void
       add_output_fields(const LA::Vector &field) override;
 
@@ -101,15 +102,15 @@ namespace pneuma
       Vector<double>
       own_part(const Vector<double> &border) const;
 
-      Model                                &model;
-      membrane::MembraneSubsystem          &membrane;
-      ChamberParameters                     parameters;
-      ChamberAssembler                      assembler;
-      ChamberSystem                         system;
-      std::vector<ChamberLoad>              pass_loads;
-      std::vector<ChamberMeasures>          measures;
+      Model                                  &model;
+      membrane::MembraneSubsystem            &membrane;
+      ChamberParameters                       parameters;
+      ChamberAssembler                        assembler;
+      ChamberSystem                           system;
+      std::vector<ChamberLoad>                pass_loads;
+      std::vector<ChamberMeasures>            measures;
       std::unique_ptr<ChamberAssembler::Pass> pass;
-      ChamberCellData                       output_cells;
+      ChamberCellData                         output_cells;
     };
   } // namespace chambers
 } // namespace pneuma

@@ -42,7 +42,7 @@ namespace pneuma
     /// What is reported for one chamber (history.csv, summary.json).
     struct ChamberReport
     {
-      double pressure = 0.;          ///< gauge gas pressure [Pa]
+      double pressure          = 0.; ///< gauge gas pressure [Pa]
       double absolute_pressure = 0.; ///< [Pa]
       double volume = 0., gas_volume = 0., liquid_volume = 0.;
       double level = 0., wetted_area = 0.;
@@ -139,16 +139,16 @@ namespace pneuma
         bool                      gas = false, liquid = false;
         unsigned int              p_index = 0, h_index = 0;
         double                    p = 0., h = 0.; ///< physical unknowns
-        double                    V0     = 0.; ///< initial volume
-        double                    amount = 0.; ///< V_n when sealed
+        double                    V0     = 0.;    ///< initial volume
+        double                    amount = 0.;    ///< V_n when sealed
         bool                      sealed = false;
         bool                      empty  = false; ///< no liquid: h fixed
-        GasState                  old; ///< last converged state
+        GasState                  old;            ///< last converged state
       };
 
       /// Sum member measures into group totals.
       void
-      group_measures(const Group                         &g,
+      group_measures(const Group                        &g,
                      const std::vector<ChamberMeasures> &m,
                      double                             &V,
                      double                             &V_l,
@@ -166,14 +166,14 @@ namespace pneuma
       void
       record(const LA::Vector &u);
 
-      const ChamberParameters &parameters;
-      const ChamberAssembler  &assembler;
-      std::vector<Group>       groups;
+      const ChamberParameters  &parameters;
+      const ChamberAssembler   &assembler;
+      std::vector<Group>        groups;
       std::vector<unsigned int> group_of;
-      unsigned int             n_total = 0;
-      double                   time    = 0.;
-      std::vector<double>      unknown_scale, residual_scale;
-      double                   force_reference = 0.;
+      unsigned int              n_total = 0;
+      double                    time    = 0.;
+      std::vector<double>       unknown_scale, residual_scale;
+      double                    force_reference = 0.;
 
       std::vector<ChamberReport> chamber_reports;
     };

@@ -68,9 +68,9 @@ namespace pneuma
       }
 
     private:
-      FE_Q<2>                             fe;
-      std::vector<Point<2>>               points;
-      std::vector<double>                 psi;
+      FE_Q<2>               fe;
+      std::vector<Point<2>> points;
+      std::vector<double>   psi;
       /// Must outlive the generator, which keeps a pointer to it.
       hp::QCollection<1>                  quadrature_1d;
       NonMatching::QuadratureGenerator<2> generator;

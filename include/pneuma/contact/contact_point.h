@@ -74,8 +74,8 @@ namespace pneuma
     {
       /// True if the iteration converged with xi inside the cell (within
       /// a small tolerance).
-      bool      inside = false;
-      Point<2>  xi;
+      bool     inside = false;
+      Point<2> xi;
       /// |x_s - rho(xi)|, and the gap (x_s - rho).n - R.
       double       distance = 0., gap = 0.;
       Tensor<1, 3> normal;

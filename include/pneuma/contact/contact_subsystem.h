@@ -38,7 +38,7 @@ namespace pneuma
         return "contact";
       }
       void
-      declare_parameters(ParameterHandler &prm,
+      declare_parameters(ParameterHandler  &prm,
                          const InputLayout &layout) override;
       void
       parse_parameters(ParameterHandler &prm) override;
@@ -62,17 +62,18 @@ namespace pneuma
       void
       refresh(const LA::Vector &field) override;
       void
-      add_statistics(Statistics &statistics, const LA::Vector &field) const override;
+      add_statistics(Statistics       &statistics,
+                     const LA::Vector &field) const override;
       void
       add_output_fields(const LA::Vector &field) override;
 
     private:
-      Model                       &model;
-      membrane::MembraneSubsystem &membrane;
-      cables::CableSubsystem      *cables;
-      ContactParameters            parameters;
+      Model                         &model;
+      membrane::MembraneSubsystem   &membrane;
+      cables::CableSubsystem        *cables;
+      ContactParameters              parameters;
       std::unique_ptr<ContactSystem> contact;
-      Vector<float>                pressure_output;
+      Vector<float>                  pressure_output;
     };
   } // namespace contact
 } // namespace pneuma

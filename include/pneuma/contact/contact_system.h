@@ -131,8 +131,8 @@ namespace pneuma
         /// Reference node positions (lattice order).
         std::vector<Tensor<1, 3>> reference;
         /// +1 if rho_1 x rho_2 points outward (Geometry/Orientation).
-        double       outward = 1.;
-        double       area    = 0.;
+        double             outward  = 1.;
+        double             area     = 0.;
         types::material_id material = 0;
       };
       struct CablePoint
@@ -152,7 +152,7 @@ namespace pneuma
         /// values of its dofs.
         std::vector<std::array<Tensor<1, 3>, 2>> cell_reference;
         std::vector<std::vector<double>>         cell_reference_values;
-        std::vector<CablePoint>                   points;
+        std::vector<CablePoint>                  points;
         /// Per cable cell: candidate master cells (indices).
         std::vector<std::vector<unsigned int>> candidates;
         /// Per point of the last assembly: line load N (>= 0), or 0.
@@ -172,7 +172,7 @@ namespace pneuma
       const ContactParameters        &parameters;
       const geometry::SceneGenerator &geometry;
       const cables::CableSystem      &cables;
-      MPI_Comm                        comm = MPI_COMM_SELF;
+      MPI_Comm                        comm   = MPI_COMM_SELF;
       unsigned int                    degree = 1;
       std::vector<MasterCell>         masters;
       std::vector<PairData>           pairs;

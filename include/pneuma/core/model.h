@@ -189,7 +189,8 @@ namespace pneuma
     refresh(const solvers::BorderedVector &state);
     /// Statistics of every subsystem at @p state (call reduce() after).
     void
-    add_statistics(Statistics &statistics, const solvers::BorderedVector &state);
+    add_statistics(Statistics                    &statistics,
+                   const solvers::BorderedVector &state);
     /// Write every subsystem's output files of @p state at @p step.
     void
     write_output(const std::string             &directory,

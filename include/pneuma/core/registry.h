@@ -39,7 +39,7 @@ namespace pneuma
   public:
     struct Entry
     {
-      std::string                                  name, description;
+      std::string                                 name, description;
       std::function<std::unique_ptr<Interface>()> create;
     };
 
@@ -125,10 +125,10 @@ namespace pneuma
      */
     std::unique_ptr<Interface>
     take(std::map<std::string, std::unique_ptr<Interface>> &all,
-         dealii::ParameterHandler                           &prm,
-         const std::string                                  &name,
-         const std::string                                  &parameter,
-         const std::string                                  &path) const
+         dealii::ParameterHandler                          &prm,
+         const std::string                                 &name,
+         const std::string                                 &parameter,
+         const std::string                                 &path) const
     {
       check(name, parameter);
       auto variant = std::move(all.at(name));
@@ -151,12 +151,12 @@ namespace pneuma
  * @p description) of the family @p Interface. Use once, at namespace
  * scope, in the variant's own .cc file.
  */
-#define PNEUMA_REGISTER_VARIANT(Interface, Variant, name, description)       \
+#define PNEUMA_REGISTER_VARIANT(Interface, Variant, name, description)        \
   namespace                                                                   \
   {                                                                           \
     const bool PNEUMA_REGISTRY_CONCAT(pneuma_registered_variant_, __LINE__) = \
       ::pneuma::Registry<Interface>::instance().add(                          \
         {name, description, []() {                                            \
-           return std::unique_ptr<Interface>(std::make_unique<Variant>());     \
+           return std::unique_ptr<Interface>(std::make_unique<Variant>());    \
          }});                                                                 \
   }

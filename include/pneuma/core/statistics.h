@@ -51,7 +51,8 @@ namespace pneuma
     /// summary-only values, which may cost an assembly, only to it).
     explicit Statistics(const bool summary_row = false)
       : summary_row(summary_row)
-    {}
+    {
+    }
 
     /// True for the row of summary.json.
     bool
@@ -86,10 +87,10 @@ namespace pneuma
     {
       StatisticsGroup     group;
       std::string         name;
-      std::string         unit; ///< SI unit, empty for counts and ratios
+      std::string         unit;   ///< SI unit, empty for counts and ratios
       std::vector<double> values; ///< one or three components
-      bool                integer = false;
-      unsigned int        uses    = all;
+      bool                integer   = false;
+      unsigned int        uses      = all;
       Reduction           reduction = Reduction::same;
 
       /// history.csv column of component @p c ("c1_pressure").

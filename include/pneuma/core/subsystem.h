@@ -55,7 +55,7 @@ namespace pneuma
     /// Pseudo time of the loads.
     double time = 0.;
     /// The field, ghosted, and the (scaled) border unknowns.
-    const LA::Vector     *field  = nullptr;
+    const LA::Vector             *field  = nullptr;
     const dealii::Vector<double> *border = nullptr;
     /// Constraints to distribute with.
     const dealii::AffineConstraints<double> *constraints = nullptr;
@@ -64,7 +64,7 @@ namespace pneuma
     LA::SparseMatrix *tangent  = nullptr;
     LA::Vector       *external = nullptr;
     /// Residual rows of the border (scaled) and its Jacobian blocks.
-    dealii::Vector<double>          *border_residual = nullptr;
+    dealii::Vector<double>  *border_residual = nullptr;
     solvers::BorderCoupling *coupling        = nullptr;
   };
 
@@ -146,7 +146,8 @@ namespace pneuma
     /// Everything that needs the final numbering and constraints.
     virtual void
     finish_setup()
-    {}
+    {
+    }
     /// Couplings of the tangent.
     virtual void
     add_sparsity(dealii::DynamicSparsityPattern          &dsp,
@@ -265,8 +266,8 @@ namespace pneuma
     /// Accept the converged state at @p t (@p border: this subsystem's
     /// part).
     virtual void
-    commit_step(const double          t,
-                const LA::Vector     &field,
+    commit_step(const double                  t,
+                const LA::Vector             &field,
                 const dealii::Vector<double> &border)
     {
       (void)t;
@@ -278,7 +279,8 @@ namespace pneuma
     /// restores the field and border of the last converged state.
     virtual void
     reject_step()
-    {}
+    {
+    }
     /// Reports of a converged state that need the final assembly (contact
     /// points at the accepted state).
     virtual void
@@ -359,13 +361,13 @@ namespace pneuma
  * @p name at position @p order, with its switch declaration and activity
  * test (static functions). Use once per class, at namespace scope.
  */
-#define PNEUMA_REGISTER_SUBSYSTEM(Class, name, order, switches, active)   \
-  namespace                                                              \
-  {                                                                      \
-    const bool PNEUMA_CONCAT(pneuma_registered_subsystem_, __LINE__) =   \
-      ::pneuma::register_subsystem(                                      \
+#define PNEUMA_REGISTER_SUBSYSTEM(Class, name, order, switches, active) \
+  namespace                                                             \
+  {                                                                     \
+    const bool PNEUMA_CONCAT(pneuma_registered_subsystem_, __LINE__) =  \
+      ::pneuma::register_subsystem(                                     \
         {name, order, switches, active, [](::pneuma::Model &model) {    \
-           return std::unique_ptr<::pneuma::Subsystem>(                  \
-             std::make_unique<Class>(model));                            \
-         }});                                                            \
+           return std::unique_ptr<::pneuma::Subsystem>(                 \
+             std::make_unique<Class>(model));                           \
+         }});                                                           \
   }

@@ -61,10 +61,10 @@ namespace pneuma
       /// material id is in @p rigid_ids (rigid plates, prescribed regions)
       /// is the master.
       void
-      find(const Mapping<2, 3>                 &mapping,
-           const DoFHandler<2, 3>              &dof_handler,
+      find(const Mapping<2, 3>                &mapping,
+           const DoFHandler<2, 3>             &dof_handler,
            const std::set<types::material_id> &rigid_ids,
-           const IndexSet                      &locally_relevant);
+           const IndexSet                     &locally_relevant);
 
       /// Add u_copy = u_master for every tie not already constrained.
       void

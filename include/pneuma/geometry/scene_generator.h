@@ -8,11 +8,12 @@
  *
  * | Type            | placement and ids |
  * |-----------------|-------------------|
- * | disc            | radius a, centre 0, plane z = 0; material 0, rim boundary 0 |
- * | square          | side L, centre 0, plane z = 0; material 0, edges x-,x+,y-,y+ = 0..3 |
- * | sphere          | radius R, centre 0; material 0 |
- * | closed cylinder | radius R, axis x from 0 to L, flat caps; hull 0, cap at x = 0 is 1, at x = L is 2 |
- * | gmsh            | a 2D-in-3D .msh file; physical surfaces = material ids, physical curves = boundary ids |
+ * | disc            | radius a, centre 0, plane z = 0; material 0, rim boundary
+ * 0 | | square          | side L, centre 0, plane z = 0; material 0, edges
+ * x-,x+,y-,y+ = 0..3 | | sphere          | radius R, centre 0; material 0 | |
+ * closed cylinder | radius R, axis x from 0 to L, flat caps; hull 0, cap at x =
+ * 0 is 1, at x = L is 2 | | gmsh            | a 2D-in-3D .msh file; physical
+ * surfaces = material ids, physical curves = boundary ids |
  */
 
 #include <deal.II/base/parameter_handler.h>
@@ -71,8 +72,8 @@ namespace pneuma
       }
 
     private:
-      std::string                                              geometry_type;
-      unsigned int                                             refinements = 3;
+      std::string                                             geometry_type;
+      unsigned int                                            refinements = 3;
       std::map<std::string, std::unique_ptr<SurfaceGeometry>> variants;
       std::unique_ptr<SurfaceGeometry>                        surface;
     };

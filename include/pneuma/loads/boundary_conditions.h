@@ -48,7 +48,7 @@ namespace pneuma
        */
       void
       add_update_constraints(
-        const DoFHandler<2, 3>                  &dof_handler,
+        const DoFHandler<2, 3>                     &dof_handler,
         const std::set<types::global_dof_index>    &rigid_slaves,
         const std::vector<types::global_dof_index> &rigid_masters,
         const std::set<types::global_dof_index>    &junction_copies,

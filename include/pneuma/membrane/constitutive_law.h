@@ -117,7 +117,7 @@ namespace pneuma
         double                     density   = 0.;
         std::map<std::string, std::unique_ptr<ConstitutiveLaw>> laws;
       };
-      std::vector<std::unique_ptr<Slot>>                     slots;
+      std::vector<std::unique_ptr<Slot>>                   slots;
       std::map<dealii::types::material_id, RegionMaterial> regions;
     };
   } // namespace membrane

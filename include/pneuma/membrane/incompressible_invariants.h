@@ -22,11 +22,10 @@ namespace pneuma
     /// I1, I2 of the incompressible plane-stress state and derivatives.
     struct IncompressibleInvariants
     {
-      explicit IncompressibleInvariants(
-        const dealii::SymmetricTensor<2, 2> &C)
+      explicit IncompressibleInvariants(const dealii::SymmetricTensor<2, 2> &C)
       {
         using namespace dealii;
-        const SymmetricTensor<2, 2> I = unit_symmetric_tensor<2>();
+        const SymmetricTensor<2, 2> I    = unit_symmetric_tensor<2>();
         const double                detC = determinant(C);
         const SymmetricTensor<2, 2> Ci   = invert(C);
         const double                trC  = trace(C);
@@ -40,15 +39,16 @@ namespace pneuma
           for (unsigned int j = i; j < 2; ++j)
             for (unsigned int k = 0; k < 2; ++k)
               for (unsigned int l = k; l < 2; ++l)
-                CioCi[i][j][k][l] = 0.5 * (Ci[i][k] * Ci[j][l] + Ci[i][l] * Ci[j][k]);
+                CioCi[i][j][k][l] =
+                  0.5 * (Ci[i][k] * Ci[j][l] + Ci[i][l] * Ci[j][k]);
         const SymmetricTensor<4, 2> CixCi = outer_product(Ci, Ci);
 
         dI1  = I - l3sq * Ci;
         dI2  = detC * Ci + l3sq * I - trC * l3sq * Ci;
         ddI1 = l3sq * (CixCi + CioCi);
-        ddI2 = detC * (CixCi - CioCi) -
-               l3sq * (outer_product(I, Ci) + outer_product(Ci, I)) +
-               trC * l3sq * (CixCi + CioCi);
+        ddI2 = detC * (CixCi - CioCi)
+               - l3sq * (outer_product(I, Ci) + outer_product(Ci, I))
+               + trC * l3sq * (CixCi + CioCi);
       }
 
       double                        l3sq, I1, I2;

@@ -89,7 +89,7 @@ namespace pneuma
       }
 
       void
-      declare_parameters(ParameterHandler &prm,
+      declare_parameters(ParameterHandler  &prm,
                          const InputLayout &layout) override;
       void
       parse_parameters(ParameterHandler &prm) override;
@@ -114,15 +114,17 @@ namespace pneuma
       add_regularisation(const AffineConstraints<double> &constraints,
                          LA::SparseMatrix                &L) const override;
       void
-      add_near_null_space(const IndexSet                   &owned,
-                          std::vector<std::vector<double>> &modes) const override;
+      add_near_null_space(
+        const IndexSet                   &owned,
+        std::vector<std::vector<double>> &modes) const override;
       double
-      initial_shift(const double                     factor,
-                    const UnknownRange              &range,
-                    const LA::SparseMatrix          &K,
-                    const LA::SparseMatrix          &L,
-                    const LA::Vector                &external,
-                    const AffineConstraints<double> &constraints) const override;
+      initial_shift(
+        const double                     factor,
+        const UnknownRange              &range,
+        const LA::SparseMatrix          &K,
+        const LA::SparseMatrix          &L,
+        const LA::Vector                &external,
+        const AffineConstraints<double> &constraints) const override;
 
       void
       set_prescribed_values(const double t, LA::Vector &field) const override;
@@ -133,7 +135,8 @@ namespace pneuma
       std::string
       check_state(const LA::Vector &field) const override;
       void
-      add_statistics(Statistics &statistics, const LA::Vector &field) const override;
+      add_statistics(Statistics       &statistics,
+                     const LA::Vector &field) const override;
       void
       add_output_fields(const LA::Vector &field) override;
       void

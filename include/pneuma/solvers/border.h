@@ -58,7 +58,7 @@ namespace pneuma
       std::vector<LA::Vector> B, C;
       std::vector<bool>       has_B, has_C;
       /// dg/dlambda, physical units.
-      FullMatrix<double> D;
+      FullMatrix<double>  D;
       std::vector<double> unknown_scale, residual_scale;
 
       /**
@@ -66,7 +66,7 @@ namespace pneuma
        * caller has called solver.factorize(K). @p rhs and @p dx are scaled.
        */
       void
-      solve(LinearSolver          &solver,
+      solve(LinearSolver           &solver,
             const LA::SparseMatrix &K,
             const BorderedVector   &rhs,
             BorderedVector         &dx) const;

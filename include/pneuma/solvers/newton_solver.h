@@ -171,7 +171,8 @@ namespace pneuma
                    NewtonResult             &result) const;
 
       void
-      print_header(NonlinearProblem &problem, const ConditionalOStream &out) const;
+      print_header(NonlinearProblem         &problem,
+                   const ConditionalOStream &out) const;
 
       unsigned int max_iter           = 25;
       double       residual_tolerance = 1e-8;

@@ -26,9 +26,13 @@ namespace pneuma
         void
         declare_parameters(ParameterHandler &prm) override
         {
-          prm.add_parameter("Radius", radius, "Radius R [m]; > 0.",
+          prm.add_parameter("Radius",
+                            radius,
+                            "Radius R [m]; > 0.",
                             Patterns::Double());
-          prm.add_parameter("Length", length, "Length L along x [m]; > 0.",
+          prm.add_parameter("Length",
+                            length,
+                            "Length L along x [m]; > 0.",
                             Patterns::Double());
           prm.add_parameter("Cells along length",
                             cells_along_length,
@@ -47,21 +51,25 @@ namespace pneuma
         {
           // Surface of a solid cylinder: hull and two flat caps.
           const unsigned int n_axial =
-            cells_along_length > 0 ?
-              cells_along_length :
-              std::max(1u,
-                       static_cast<unsigned int>(
-                         std::round(length / (0.5 * M_PI * radius))));
+            cells_along_length > 0
+              ? cells_along_length
+              : std::max(1u,
+                         static_cast<unsigned int>(
+                           std::round(length / (0.5 * M_PI * radius))));
           Triangulation<3> solid;
-          GridGenerator::subdivided_cylinder(solid, n_axial, radius, length / 2);
+          GridGenerator::subdivided_cylinder(solid,
+                                             n_axial,
+                                             radius,
+                                             length / 2);
           GridTools::shift(Tensor<1, 3>({length / 2, 0., 0.}), solid);
           GridGenerator::extract_boundary_mesh(solid, coarse);
           for (const auto &cell : coarse.active_cell_iterators())
             {
               const double xc = cell->center()[0];
-              cell->set_material_id(std::abs(xc) < 1e-8 * length          ? 1 :
-                                    std::abs(xc - length) < 1e-8 * length ? 2 :
-                                                                            0);
+              cell->set_material_id(std::abs(xc) < 1e-8 * length ? 1
+                                    : std::abs(xc - length) < 1e-8 * length
+                                      ? 2
+                                      : 0);
             }
         }
         void
@@ -71,9 +79,9 @@ namespace pneuma
           for (const auto &cell : tria.active_cell_iterators())
             if (cell->material_id() == 0)
               cell->set_all_manifold_ids(curved_manifold);
-          tria.set_manifold(curved_manifold,
-                            CylindricalManifold<2, 3>(Tensor<1, 3>({1., 0., 0.}),
-                                                      Point<3>()));
+          tria.set_manifold(
+            curved_manifold,
+            CylindricalManifold<2, 3>(Tensor<1, 3>({1., 0., 0.}), Point<3>()));
         }
         double
         orientation(const Point<3> &x, const Tensor<1, 3> &n) const override

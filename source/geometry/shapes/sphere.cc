@@ -22,7 +22,9 @@ namespace pneuma
         void
         declare_parameters(ParameterHandler &prm) override
         {
-          prm.add_parameter("Radius", radius, "Radius R [m]; > 0.",
+          prm.add_parameter("Radius",
+                            radius,
+                            "Radius R [m]; > 0.",
                             Patterns::Double());
         }
         void

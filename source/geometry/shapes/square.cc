@@ -21,7 +21,9 @@ namespace pneuma
         void
         declare_parameters(ParameterHandler &prm) override
         {
-          prm.add_parameter("Side length", side, "Side L [m]; > 0.",
+          prm.add_parameter("Side length",
+                            side,
+                            "Side L [m]; > 0.",
                             Patterns::Double());
         }
         void

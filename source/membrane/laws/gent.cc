@@ -68,8 +68,8 @@ namespace pneuma
         {
           const IncompressibleInvariants inv(C);
           const double                   gap = Jm - (inv.I1 - 3.);
-          const double f   = gap > 0. ? Jm / gap :
-                                        std::numeric_limits<double>::infinity();
+          const double                   f =
+            gap > 0. ? Jm / gap : std::numeric_limits<double>::infinity();
           const double W1  = 0.5 * mu * f;
           const double W11 = 0.5 * mu * f * f / Jm;
           S                = 2. * W1 * inv.dI1;
@@ -80,8 +80,8 @@ namespace pneuma
         strain_energy(const SymmetricTensor<2, 2> &C) const override
         {
           const double x = (IncompressibleInvariants(C).I1 - 3.) / Jm;
-          return x < 1. ? -0.5 * mu * Jm * std::log1p(-x) :
-                          std::numeric_limits<double>::infinity();
+          return x < 1. ? -0.5 * mu * Jm * std::log1p(-x)
+                        : std::numeric_limits<double>::infinity();
         }
 
         double

@@ -41,8 +41,8 @@ namespace pneuma
         {
           check_input(youngs_modulus > 0.,
                       path + "/Young's modulus",
-                      "must be positive, got " +
-                        std::to_string(youngs_modulus));
+                      "must be positive, got "
+                        + std::to_string(youngs_modulus));
           check_input(poisson > -1. && poisson < 0.5,
                       path + "/Poisson's ratio",
                       "must lie in (-1, 0.5), got " + std::to_string(poisson));
@@ -64,7 +64,8 @@ namespace pneuma
         double
         strain_energy(const SymmetricTensor<2, 2> &C) const override
         {
-          const SymmetricTensor<2, 2> E = 0.5 * (C - unit_symmetric_tensor<2>());
+          const SymmetricTensor<2, 2> E =
+            0.5 * (C - unit_symmetric_tensor<2>());
           return 0.5 * lambda_bar * trace(E) * trace(E) + mu * (E * E);
         }
 
