@@ -66,14 +66,28 @@ def allowed(description):
     return d
 
 
+# deal.II's ParsedFunction entries carry a long generic text; the tables
+# say it once, short.
+PARSED_FUNCTION = {
+    "Function constants": "constants of the expression, `a=1, b=2`",
+    "Function expression": "muparser expression of the variables; vector "
+                           "components separated by `;`",
+    "Variable names": "the variables: reference position and pseudo time",
+}
+
+
 def rows(tree, path=()):
     for key in sorted(tree):
         value = tree[key]
         if isinstance(value, dict) and "default_value" in value:
             entry = " / ".join(path + (key,))
+            doc = value.get("documentation", "")
+            if key in PARSED_FUNCTION and doc.startswith(
+                    ("Sometimes it is convenient", "The formula that",
+                     "The names of the variables")):
+                doc = PARSED_FUNCTION[key]
             yield (entry, value["default_value"],
-                   allowed(value.get("pattern_description", "")),
-                   value.get("documentation", ""))
+                   allowed(value.get("pattern_description", "")), doc)
         elif isinstance(value, dict):
             yield from rows(value, path + (template_name(key),))
 
