@@ -125,17 +125,7 @@ namespace pneuma
       if (s0 > 0. && factor > 0.)
         return s0;
       // No load: mean(diag K)/mean(diag L) over the free cable dofs.
-      double k_sum = 0., m_sum = 0.;
-      for (const auto i : model.locally_owned())
-        if (i >= range.first && i < range.first + range.size
-            && !constraints.is_constrained(i))
-          {
-            k_sum += std::abs(K.diag_element(i));
-            m_sum += L.diag_element(i);
-          }
-      k_sum = Utilities::MPI::sum(k_sum, comm);
-      m_sum = Utilities::MPI::sum(m_sum, comm);
-      return m_sum > 0. ? factor * k_sum / m_sum : 0.;
+      return factor * model.diagonal_ratio(range, K, L, constraints);
     }
 
     void

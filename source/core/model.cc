@@ -427,6 +427,25 @@ namespace pneuma
     return 0.;
   }
 
+  double
+  Model::diagonal_ratio(const UnknownRange              &range,
+                        const LA::SparseMatrix          &K,
+                        const LA::SparseMatrix          &L,
+                        const AffineConstraints<double> &constraints) const
+  {
+    double k_sum = 0., m_sum = 0.;
+    for (const auto i : owned)
+      if (i >= range.first && i < range.first + range.size
+          && !constraints.is_constrained(i))
+        {
+          k_sum += std::abs(K.diag_element(i));
+          m_sum += L.diag_element(i);
+        }
+    k_sum = Utilities::MPI::sum(k_sum, comm);
+    m_sum = Utilities::MPI::sum(m_sum, comm);
+    return m_sum > 0. ? k_sum / m_sum : 0.;
+  }
+
   void
   Model::laplacian_vmult(const solvers::BorderedVector &x,
                          solvers::BorderedVector       &y)

@@ -309,17 +309,7 @@ namespace pneuma
       // mean(diag K)/mean(diag L) over the unconstrained membrane dofs:
       // the membrane sets the scale (stiff cables must not slow its
       // continuation down).
-      double k_sum = 0., m_sum = 0.;
-      for (const auto i : model.locally_owned())
-        if (i >= range.first && i < range.first + range.size
-            && !constraints.is_constrained(i))
-          {
-            k_sum += std::abs(K.diag_element(i));
-            m_sum += L.diag_element(i);
-          }
-      k_sum = Utilities::MPI::sum(k_sum, comm);
-      m_sum = Utilities::MPI::sum(m_sum, comm);
-      return m_sum > 0. ? factor * k_sum / m_sum : 0.;
+      return factor * model.diagonal_ratio(range, K, L, constraints);
     }
 
     void

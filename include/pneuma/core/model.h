@@ -229,6 +229,15 @@ namespace pneuma
     std::vector<double>
     block_norms(const solvers::BorderedVector &r) const override;
 
+    /// mean(|diag K|)/mean(diag L) over the unconstrained dofs of @p range
+    /// (0 if L has no weight there): the stiffness scale that makes a
+    /// continuation shift dimensionless.
+    double
+    diagonal_ratio(const UnknownRange                      &range,
+                   const LA::SparseMatrix                  &K,
+                   const LA::SparseMatrix                  &L,
+                   const dealii::AffineConstraints<double> &constraints) const;
+
     /// Pseudo time of the loads in assemble().
     double current_time = 0.;
 
