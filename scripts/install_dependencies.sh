@@ -7,7 +7,8 @@
 set -euo pipefail
 packages=(build-essential cmake ccache libdeal.ii-dev numdiff
           libopenblas0-pthread
-          gmsh openmpi-bin time python3 python3-matplotlib clang-format)
+          gmsh openmpi-bin time python3 python3-matplotlib python3-vtk9
+          clang-format)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" \

@@ -5,6 +5,8 @@
 #include <pneuma/membrane/surface_kinematics.h>
 #include <pneuma/postprocess/membrane_fields.h>
 
+#include <cmath>
+
 namespace pneuma
 {
   namespace postprocess
@@ -102,9 +104,14 @@ namespace pneuma
                 f.values[8 + d][k]  = eig[k1].second[d];
                 f.values[11 + d][k] = eig[k2].second[d];
               }
-            const auto e    = eigenvalues(E_avg);
-            f.values[14][k] = e[0];
-            f.values[15][k] = e[1];
+            // Principal strains m +- r with r = |((E11 - E22)/2, E12)|:
+            // the root of a sum of squares, never of a round-off negative
+            // discriminant (nearly isotropic strain, e.g. on end plates).
+            const double m = 0.5 * (E_avg[0][0] + E_avg[1][1]);
+            const double r =
+              std::hypot(0.5 * (E_avg[0][0] - E_avg[1][1]), E_avg[0][1]);
+            f.values[14][k] = m + r;
+            f.values[15][k] = m - r;
             f.values[16][k] = l3;
             f.values[17][k] = cell->material_id();
           }
