@@ -8,12 +8,14 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <pneuma/core/collective_error.h>
 #include <pneuma/core/input_error.h>
 #include <pneuma/core/simulator.h>
 
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
 
 namespace
 {
@@ -103,18 +105,21 @@ main(int argc, char **argv)
   int exit_code = pneuma::success;
   try
     {
-      // What the input uses decides what is declared.
-      const auto layout = pneuma::InputLayout::read(file, overrides);
-      // The simulator is destroyed only after its errors are handled, so
-      // no destructor ever runs with an exception in flight.
-      pneuma::Simulator simulator(comm, layout);
+      // Phase 1, before any work: read, declare, parse, set up. An input
+      // error on any rank is agreed on by all (no rank waits for ever) and
+      // reported once.
+      std::unique_ptr<pneuma::Simulator> simulator;
+      std::string                        error;
       try
         {
+          // What the input uses decides what is declared.
+          const auto layout = pneuma::InputLayout::read(file, overrides);
+          simulator         = std::make_unique<pneuma::Simulator>(comm, layout);
           dealii::ParameterHandler prm;
-          simulator.declare_parameters(prm);
+          simulator->declare_parameters(prm);
           pneuma::parse_input(prm, file, overrides);
-          simulator.parse_parameters(prm);
-          simulator.setup();
+          simulator->parse_parameters(prm);
+          simulator->setup();
           // Keep a copy of the parameters as used.
           prm.enter_subsection("Output");
           const std::string dir = prm.get("Directory");
@@ -125,41 +130,56 @@ main(int argc, char **argv)
               std::ofstream copy(dir + "/parameters.prm");
               prm.print_parameters(copy, dealii::ParameterHandler::ShortText);
             }
-          const pneuma::RunResult result = simulator.run();
-          exit_code                      = result.exit_code;
-          if (root && exit_code != pneuma::success)
-            std::cerr << "pneuma: " << result.message << std::endl;
-          const auto &summary = result.summary;
-          if (root)
-            for (unsigned int m = 0;
-                 summary.has("m" + std::to_string(m) + "_u");
-                 ++m)
-              {
-                const std::string key = "m" + std::to_string(m);
-                const auto        x   = summary.get_vector(key + "_position");
-                const auto        u   = summary.get_vector(key + "_u");
-                std::cout << "monitor " << m << " at (" << x[0] << ", " << x[1]
-                          << ", " << x[2] << "): u = (" << u[0] << ", " << u[1]
-                          << ", " << u[2] << ") m" << std::endl;
-              }
-          if (root && exit_code == pneuma::success)
-            std::cout << "pneuma: finished, " << summary.get("steps")
-                      << " steps, " << summary.get("newton_iterations")
-                      << " Newton iterations, " << summary.get("wall_seconds")
-                      << " s" << std::endl;
         }
       catch (const pneuma::InputError &e)
         {
-          if (root)
-            std::cerr << "pneuma: error in " << e.what() << std::endl;
-          exit_code = pneuma::bad_input;
+          error = e.what();
         }
-    }
-  catch (const pneuma::InputError &e)
-    {
+      error = pneuma::agree_on_error(comm, error, pneuma::bad_input);
+      if (!error.empty())
+        {
+          if (root)
+            std::cerr << "pneuma: error in " << error << std::endl;
+          return pneuma::bad_input;
+        }
+
+      // Phase 2: the run (an input error can still show in the reference
+      // state, e.g. chamber walls that face inward).
+      pneuma::RunResult result;
+      try
+        {
+          result = simulator->run();
+        }
+      catch (const pneuma::InputError &e)
+        {
+          error = e.what();
+        }
+      error = pneuma::agree_on_error(comm, error, pneuma::bad_input);
+      if (!error.empty())
+        {
+          if (root)
+            std::cerr << "pneuma: error in " << error << std::endl;
+          return pneuma::bad_input;
+        }
+      exit_code = result.exit_code;
+      if (root && exit_code != pneuma::success)
+        std::cerr << "pneuma: " << result.message << std::endl;
+      const auto &summary = result.summary;
       if (root)
-        std::cerr << "pneuma: error in " << e.what() << std::endl;
-      exit_code = pneuma::bad_input;
+        for (unsigned int m = 0; summary.has("m" + std::to_string(m) + "_u");
+             ++m)
+          {
+            const std::string key = "m" + std::to_string(m);
+            const auto        x   = summary.get_vector(key + "_position");
+            const auto        u   = summary.get_vector(key + "_u");
+            std::cout << "monitor " << m << " at (" << x[0] << ", " << x[1]
+                      << ", " << x[2] << "): u = (" << u[0] << ", " << u[1]
+                      << ", " << u[2] << ") m" << std::endl;
+          }
+      if (root && exit_code == pneuma::success)
+        std::cout << "pneuma: finished, " << summary.get("steps") << " steps, "
+                  << summary.get("newton_iterations") << " Newton iterations, "
+                  << summary.get("wall_seconds") << " s" << std::endl;
     }
   catch (const std::exception &e)
     {

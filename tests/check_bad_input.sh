@@ -28,6 +28,21 @@ check() { # case-file, expected exit code, text the message must contain
     echo "ok   $(basename "$1"): exit $code: $(head -c 200 <<<"$out" | tr '\n' ' ')"
   fi
 }
+# The same on 2 MPI ranks: every rank agrees, one message, exit 1, no rank
+# left waiting (mpirun's own banner about the exit code is dropped).
+check_mpi() { # like check, on 2 ranks
+  local out code
+  out=$(timeout 300 mpirun -np 2 "$pneuma" "${@:4}" "$1" 2>&1 |
+        sed '/^-\{20,\}$/,/^-\{20,\}$/d'; exit "${PIPESTATUS[0]}")
+  code=$?
+  if [ "$code" -ne "$2" ] || ! grep -qF -- "$3" <<<"$out" ||
+     { [ "$2" -ne 0 ] && [ "$(grep -c . <<<"$out")" -ne 1 ]; }; then
+    echo "FAIL (2 ranks) $(basename "$1"): exit $code, message: $out"
+    fail=1
+  else
+    echo "ok   (2 ranks) $(basename "$1"): exit $code: $(head -c 200 <<<"$out" | tr '\n' ' ')"
+  fi
+}
 check "$dir/unknown_parameter.prm"  1 "Nonexistent entry"
 check "$dir/out_of_range.prm"       1 "Polynomial degree"
 check "$dir/missing_mesh.prm"       1 "Geometry/gmsh/Mesh file"
@@ -99,5 +114,12 @@ check "$dir/valid.prm" 1 "not_a_mesh.msh': is not a Gmsh mesh" "${g[@]}" --set "
 check "$dir/valid.prm" 1 "unknown_node.msh': an element refers to the unknown node 9" "${g[@]}" --set "Geometry/gmsh/Mesh file=$dir/unknown_node.msh"
 w="$dir/../../parameter_files/waterbeam_filling.prm"
 check "$w" 1 "Adaptive refinement/Cycles: meshes with junction lines" --set "Geometry/gmsh/Mesh file=$dir/../../meshes/waterbeam.msh" --set "Adaptive refinement/Cycles=1"
+mkdir -p not_a_directory/history.csv
+check_mpi "$dir/valid.prm"          1 "Output/Directory: cannot write into" --set "Output/Directory=not_a_directory"
+check_mpi "$dir/valid.prm"          1 "Materials/Region 7: no cell of the mesh has material id 7" --set "Materials/Region 0/Thickness=1e-3" --set "Materials/Region 7/Thickness=1e-3"
+check_mpi "$dir/valid.prm"          1 "Geometry/disc/Radius: must be positive" --set "Geometry/disc/Radius=-1"
+check_mpi "$k"                      1 "Cables/Cable 3: is not used" --set "Cables/Cable 3/Density=1"
+check_mpi "$c"                      1 "walls face into the chamber" --set "Chambers/Chamber 1/Regions=-0, -1, -2"
+check_mpi "$dir/valid.prm"          0 "finished"
 if [ $fail -eq 0 ]; then echo "all bad inputs rejected cleanly"; fi
 exit $fail
