@@ -114,6 +114,17 @@ check "$dir/valid.prm" 1 "not_a_mesh.msh': is not a Gmsh mesh" "${g[@]}" --set "
 check "$dir/valid.prm" 1 "unknown_node.msh': an element refers to the unknown node 9" "${g[@]}" --set "Geometry/gmsh/Mesh file=$dir/unknown_node.msh"
 w="$dir/../../parameter_files/waterbeam_filling.prm"
 check "$w" 1 "Adaptive refinement/Cycles: meshes with junction lines" --set "Geometry/gmsh/Mesh file=$dir/../../meshes/waterbeam.msh" --set "Adaptive refinement/Cycles=1"
+# Numbers that are not finite at the start are bad input.
+for e in "sqrt(-1)" "1/0" "log(0)"; do
+  check "$dir/valid.prm"            1 "Loads/Pressure/Function expression: is not finite at t = 0" --set "Loads/Pressure/Function expression=$e"
+done
+check "$dir/valid.prm"              1 "Loads/Pressure/Function constants: expected name=value" --set "Loads/Pressure/Function constants=p0" --set "Loads/Pressure/Function expression=p0*t"
+check "$dir/valid.prm"              1 "Loads/Pressure/Function constants: expected name=value with a finite number" --set "Loads/Pressure/Function constants=p0=nan" --set "Loads/Pressure/Function expression=p0*t"
+check "$dir/valid.prm"              1 "Loads/Gravity vector/Function expression: '0; 0; log(-t)' is not finite at t = 0" --set "Loads/Gravity=true" --set "Loads/Gravity vector/Function expression=0; 0; log(-t)"
+check "$dir/valid.prm"              1 "Loads/Surface traction/Function expression: is not finite" --set "Loads/Surface load=true" --set "Loads/Surface traction/Function expression=0; 0; 1/(x-x)"
+check "$c"                          1 "Chambers/Ambient pressure: must be positive" --set "Chambers/Ambient pressure=0"
+check "$c"                          1 "Chambers/Chamber 1/Gas/Gas amount/Function expression: '1/t' is not finite at t = 0" --set "Chambers/Chamber 1/Gas/Gas amount/Function expression=1/t"
+check_mpi "$dir/valid.prm"          1 "Loads/Pressure/Function expression: is not finite at t = 0" --set "Loads/Pressure/Function expression=sqrt(x-1)"
 mkdir -p not_a_directory/history.csv
 check_mpi "$dir/valid.prm"          1 "Output/Directory: cannot write into" --set "Output/Directory=not_a_directory"
 check_mpi "$dir/valid.prm"          1 "Materials/Region 7: no cell of the mesh has material id 7" --set "Materials/Region 0/Thickness=1e-3" --set "Materials/Region 7/Thickness=1e-3"

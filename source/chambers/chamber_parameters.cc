@@ -1,6 +1,8 @@
 #include <deal.II/base/utilities.h>
 
 #include <pneuma/chambers/chamber_parameters.h>
+
+#include <cmath>
 #include <pneuma/core/input_error.h>
 #include <pneuma/core/input_layout.h>
 #include <pneuma/core/selection_parameter.h>
@@ -126,6 +128,11 @@ namespace pneuma
     ChamberParameters::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Chambers");
+      // The gas laws divide by it: a vacuum outside is not a chamber scene.
+      check_input(ambient_pressure > 0. && std::isfinite(ambient_pressure),
+                  "Chambers/Ambient pressure",
+                  "must be positive (absolute pressure), got "
+                    + std::to_string(ambient_pressure));
       const unsigned int n = chambers.size();
       AssertThrow(static_cast<long>(n) == prm.get_integer("Number of chambers"),
                   ExcMessage("the chambers declared are not those of the "
@@ -188,18 +195,12 @@ namespace pneuma
           def.pressure = std::make_unique<Functions::ParsedFunction<3>>(1);
           def.amount   = std::make_unique<Functions::ParsedFunction<3>>(1);
           def.volume   = std::make_unique<Functions::ParsedFunction<3>>(1);
-          loads::parse_function(prm,
-                                *def.pressure,
-                                "Pressure",
-                                def.path + "/Gas/Pressure");
-          loads::parse_function(prm,
-                                *def.amount,
-                                "Gas amount",
-                                def.path + "/Gas/Gas amount");
-          loads::parse_function(prm,
-                                *def.volume,
-                                "Volume",
-                                def.path + "/Gas/Volume");
+          loads::parse_function(
+            prm, *def.pressure, "Pressure", def.path + "/Gas/Pressure", true);
+          loads::parse_function(
+            prm, *def.amount, "Gas amount", def.path + "/Gas/Gas amount", true);
+          loads::parse_function(
+            prm, *def.volume, "Volume", def.path + "/Gas/Volume", true);
           prm.leave_subsection();
           check_input(!(def.filling == Filling::liquid_and_gas
                         && def.control == GasControl::volume),
@@ -216,7 +217,8 @@ namespace pneuma
           loads::parse_function(prm,
                                 *def.liquid_volume,
                                 "Volume",
-                                def.path + "/Liquid/Volume");
+                                def.path + "/Liquid/Volume",
+                                true);
           prm.leave_subsection();
           prm.leave_subsection();
         }

@@ -2,6 +2,7 @@
 #include <deal.II/base/timer.h>
 
 #include <pneuma/core/collective_error.h>
+#include <pneuma/core/input_error.h>
 
 #include <chrono>
 #include <climits>
@@ -51,5 +52,13 @@ namespace pneuma
     text.resize(length);
     MPI_Bcast(text.data(), length, MPI_CHAR, first, comm);
     return std::string(text.begin(), text.end());
+  }
+
+  void
+  throw_if_any(const MPI_Comm comm, const std::string &local_error)
+  {
+    const std::string error = agree_on_error(comm, local_error, 1);
+    if (!error.empty())
+      throw InputError(error);
   }
 } // namespace pneuma

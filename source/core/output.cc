@@ -146,7 +146,9 @@ namespace pneuma
         {
           *history << (first ? "" : ",");
           first = false;
-          if (e->integer)
+          if (!std::isfinite(v))
+            ; // an empty field: never "nan" or "inf" in the file
+          else if (e->integer)
             *history << static_cast<long long>(std::llround(v));
           else
             *history << std::setprecision(e->name == "wall_seconds" ? 4 : 10)

@@ -7,6 +7,8 @@
 #include <pneuma/core/input_error.h>
 #include <pneuma/loads/loads.h>
 
+#include <cmath>
+
 namespace pneuma
 {
   namespace loads
@@ -67,10 +69,36 @@ namespace pneuma
     parse_function(ParameterHandler             &prm,
                    Functions::ParsedFunction<3> &function,
                    const std::string            &name,
-                   const std::string            &path)
+                   const std::string            &path,
+                   const bool                    finite_at_origin)
     {
       prm.enter_subsection(name);
       const std::string expression = prm.get("Function expression");
+      // Constants are "name=value" with a finite number.
+      for (const auto &item :
+           Utilities::split_string_list(prm.get("Function constants"), ','))
+        {
+          const auto eq    = item.find('=');
+          bool       valid = eq != std::string::npos && eq > 0;
+          if (valid)
+            try
+              {
+                valid = std::isfinite(
+                  Utilities::string_to_double(item.substr(eq + 1)));
+              }
+            catch (...)
+              {
+                valid = false;
+              }
+          if (!valid)
+            {
+              prm.leave_subsection();
+              throw InputError(path + "/Function constants",
+                               "expected name=value with a finite number, "
+                               "got '"
+                                 + item + "'");
+            }
+        }
       // The parser reports errors on the standard streams itself: keep
       // them quiet, the one message is ours.
       std::ostringstream sink;
@@ -88,9 +116,6 @@ namespace pneuma
       try
         {
           function.parse_parameters(prm);
-          // Evaluate once: muparser reports some errors only then.
-          Vector<double> values(function.n_components);
-          function.vector_value(Point<3>(), values);
         }
       catch (...)
         {
@@ -98,7 +123,44 @@ namespace pneuma
           throw InputError(path + "/Function expression",
                            "cannot parse '" + expression + "'");
         }
+      // Evaluate once: muparser reports some errors only then.
+      Vector<double> values(function.n_components);
+      try
+        {
+          function.vector_value(Point<3>(), values);
+        }
+      catch (...)
+        {
+          prm.leave_subsection();
+          throw InputError(path + "/Function expression",
+                           "cannot evaluate '" + expression + "'");
+        }
       prm.leave_subsection();
+      if (finite_at_origin)
+        for (unsigned int c = 0; c < values.size(); ++c)
+          check_input(std::isfinite(values[c]),
+                      path + "/Function expression",
+                      "'" + expression + "' is not finite at t = 0");
+    }
+
+    std::string
+    first_non_finite(const Functions::ParsedFunction<3> &function,
+                     const std::vector<Point<3>>        &points)
+    {
+      Vector<double> values(function.n_components);
+      for (const auto &x : points)
+        {
+          function.vector_value(x, values);
+          for (unsigned int c = 0; c < values.size(); ++c)
+            if (!std::isfinite(values[c]))
+              {
+                std::ostringstream s;
+                s << "is not finite at t = " << function.get_time()
+                  << " at the reference point (" << x << ")";
+                return s.str();
+              }
+        }
+      return "";
     }
 
     Loads::Loads()
@@ -146,7 +208,8 @@ namespace pneuma
       parse_function(prm,
                      *gravity_function,
                      "Gravity vector",
-                     "Loads/Gravity vector");
+                     "Loads/Gravity vector",
+                     gravity_on);
       parse_function(prm,
                      *surface_function,
                      "Surface traction",
@@ -156,6 +219,25 @@ namespace pneuma
       line_load_ids = std::set<types::boundary_id>(ll.begin(), ll.end());
       parse_function(prm, *line_function, "Line load", "Loads/Line load");
       prm.leave_subsection();
+    }
+
+    std::string
+    Loads::non_finite_at_start(const std::vector<Point<3>> &points,
+                               const std::vector<Point<3>> &line_points) const
+    {
+      const auto check = [](Functions::ParsedFunction<3> &f,
+                            const std::vector<Point<3>>  &x,
+                            const std::string            &path) {
+        f.set_time(0.);
+        const std::string why = first_non_finite(f, x);
+        return why.empty() ? why : path + "/Function expression: " + why;
+      };
+      std::string error = check(*pressure_function, points, "Loads/Pressure");
+      if (error.empty() && surface_load_on)
+        error = check(*surface_function, points, "Loads/Surface traction");
+      if (error.empty())
+        error = check(*line_function, line_points, "Loads/Line load");
+      return error;
     }
 
     double

@@ -2,6 +2,7 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/mapping_q_cache.h>
 
+#include <pneuma/core/collective_error.h>
 #include <pneuma/core/input_error.h>
 #include <pneuma/core/input_layout.h>
 #include <pneuma/core/model.h>
@@ -213,6 +214,22 @@ namespace pneuma
         std::make_unique<MembraneAssembler>(scene, materials, model.loads());
       assembler->reinit(*mapping_cache, dofs, fe_degree);
       boundary_conditions.check_against_mesh(dofs);
+      // The loads at the start: finite at every cell centre (and line-load
+      // edge) of the reference surface, on every rank alike.
+      std::vector<Point<3>> centres, line_centres;
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            if (model.loads().pressure_acts_on(cell->material_id()))
+              centres.push_back(cell->center());
+            for (const auto f : cell->face_indices())
+              if (cell->face(f)->at_boundary()
+                  && model.loads().line_load_boundaries().count(
+                    cell->face(f)->boundary_id()))
+                line_centres.push_back(cell->face(f)->center());
+          }
+      throw_if_any(comm,
+                   model.loads().non_finite_at_start(centres, line_centres));
       // Junction copies are tied vertex by vertex: both sides of a junction
       // would have to be refined alike.
       check_input(adaptive.cycles() == 0 || junction_ties.ties.empty(),

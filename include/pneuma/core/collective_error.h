@@ -26,4 +26,12 @@ namespace pneuma
                  const std::string &local_error,
                  const int          exit_code,
                  const double       timeout = 60.);
+
+  /**
+   * Collective check: every rank calls this with its own finding
+   * ("parameter: what", or empty); if any rank found something, every rank
+   * throws the same InputError (the lowest rank's message).
+   */
+  void
+  throw_if_any(const MPI_Comm comm, const std::string &local_error);
 } // namespace pneuma

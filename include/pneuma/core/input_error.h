@@ -21,6 +21,12 @@ namespace pneuma
       : std::runtime_error(parameter + ": " + what)
     {
     }
+    /// The complete message "parameter: what" (e.g. agreed on by the MPI
+    /// ranks, core/collective_error.h).
+    explicit InputError(const std::string &message)
+      : std::runtime_error(message)
+    {
+    }
   };
 
   /// Throw an InputError for @p parameter unless @p condition holds.

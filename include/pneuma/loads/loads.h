@@ -13,6 +13,8 @@
 
 #include <memory>
 #include <set>
+#include <string>
+#include <vector>
 
 namespace pneuma
 {
@@ -39,6 +41,13 @@ namespace pneuma
       declare_parameters(ParameterHandler &prm);
       void
       parse_parameters(ParameterHandler &prm);
+
+      /// Why a membrane load is not finite at t = 0 at one of @p points
+      /// (reference cell centres) or @p line_points (centres of line-load
+      /// edges), as "parameter: what", or an empty string.
+      std::string
+      non_finite_at_start(const std::vector<Point<3>> &points,
+                          const std::vector<Point<3>> &line_points) const;
 
       /// Follower pressure [Pa] at reference point @p x and pseudo time @p t.
       double
@@ -100,12 +109,21 @@ namespace pneuma
                      const std::string &expression);
 
     /// Parse a ParsedFunction subsection, turning parser errors into a
-    /// message that names the subsection.
+    /// message that names the subsection; its constants must be finite,
+    /// and with @p finite_at_origin (load curves of t alone) so must its
+    /// values at t = 0.
     void
     parse_function(ParameterHandler             &prm,
                    Functions::ParsedFunction<3> &function,
                    const std::string            &name,
-                   const std::string            &path);
+                   const std::string            &path,
+                   const bool                    finite_at_origin = false);
+
+    /// Why @p function is not finite at one of @p points (at its current
+    /// time), or an empty string.
+    std::string
+    first_non_finite(const Functions::ParsedFunction<3> &function,
+                     const std::vector<Point<3>>        &points);
 
     /// Parse "x, y, z" into a point; errors name @p path.
     Point<3>
