@@ -132,5 +132,19 @@ check_mpi "$dir/valid.prm"          1 "Geometry/disc/Radius: must be positive" -
 check_mpi "$k"                      1 "Cables/Cable 3: is not used" --set "Cables/Cable 3/Density=1"
 check_mpi "$c"                      1 "walls face into the chamber" --set "Chambers/Chamber 1/Regions=-0, -1, -2"
 check_mpi "$dir/valid.prm"          0 "finished"
+# A rerun into the same directory leaves no file of the earlier run.
+"$pneuma" "$dir/valid.prm" --set "Output/Directory=rerun" --set "Output/Write VTU=true" \
+  --set "Loads/Pressure/Function expression=100*t" --set "Load stepping/Initial increment=0.05" \
+  --set "Load stepping/Maximum increment=0.05" > /dev/null 2>&1
+touch rerun/my_notes.txt
+"$pneuma" "$dir/valid.prm" --set "Output/Directory=rerun" --set "Output/Write VTU=true" \
+  --set "Loads/Pressure/Function expression=100*t" > /dev/null 2>&1
+if [ -e rerun/solution_0010.pvtu ] || [ ! -e rerun/my_notes.txt ] ||
+   [ "$(grep -c DataSet rerun/solution.pvd)" -ne 5 ]; then
+  echo "FAIL rerun: files of the earlier run left behind, or other files removed: $(ls rerun | tr '\n' ' ')"
+  fail=1
+else
+  echo "ok   rerun: only the files of the new run (and the user's own) are left"
+fi
 if [ $fail -eq 0 ]; then echo "all bad inputs rejected cleanly"; fi
 exit $fail

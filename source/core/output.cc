@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <map>
+#include <regex>
 #include <sstream>
 
 namespace pneuma
@@ -98,19 +99,62 @@ namespace pneuma
   }
 
   void
+  OutputWriter::check_directory(const MPI_Comm comm) const
+  {
+    // Rank 0 creates the directory and writes a probe file; every rank
+    // learns the outcome (no rank is left waiting).
+    std::string error;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        namespace fs = std::filesystem;
+        std::error_code ec;
+        fs::create_directories(output_directory, ec);
+        const std::string probe = output_directory + "/.pneuma-write-test";
+        {
+          std::ofstream out(probe);
+          out << "pneuma\n";
+          out.flush();
+          if (!fs::is_directory(output_directory, ec) || !out)
+            error =
+              "Output/Directory: cannot write into '" + output_directory + "'";
+        }
+        fs::remove(probe, ec);
+      }
+    error = Utilities::MPI::broadcast(comm, error, 0);
+    if (!error.empty())
+      throw InputError(error);
+  }
+
+  void
   OutputWriter::prepare(const MPI_Comm comm)
   {
-    root    = Utilities::MPI::this_mpi_process(comm) == 0;
-    bool ok = true;
+    root = Utilities::MPI::this_mpi_process(comm) == 0;
+    check_directory(comm);
     if (root)
       {
+        // The files of an earlier run into this directory go, so that no
+        // file series mixes two runs (doc/user-guide.md "Outputs").
+        namespace fs = std::filesystem;
         std::error_code ec;
-        std::filesystem::create_directories(output_directory, ec);
+        for (const auto &entry : fs::directory_iterator(output_directory, ec))
+          {
+            static const std::regex files(
+              "solution_[0-9]{4}(\\.[0-9]+)?\\.(vtu|pvtu)|"
+              "cables_[0-9]+_[0-9]{4}\\.vtu|solution\\.pvd|cables\\.pvd|"
+              "history\\.csv|summary\\.json|refinement\\.csv");
+            static const std::regex cycles("cycle-[0-9]+");
+            const std::string       name = entry.path().filename().string();
+            const bool              ours =
+              (entry.is_regular_file(ec) && std::regex_match(name, files))
+              || (entry.is_directory(ec) && std::regex_match(name, cycles));
+            if (ours)
+              fs::remove_all(entry.path(), ec);
+          }
         history =
           std::make_unique<std::ofstream>(output_directory + "/history.csv");
-        ok = static_cast<bool>(*history);
       }
-    ok = Utilities::MPI::broadcast(comm, ok, 0);
+    bool ok = !root || static_cast<bool>(*history);
+    ok      = Utilities::MPI::broadcast(comm, ok, 0);
     check_input(ok,
                 "Output/Directory",
                 "cannot write into '" + output_directory + "'");
@@ -155,6 +199,8 @@ namespace pneuma
                      << v;
         }
     *history << std::endl;
+    if (!*history)
+      throw WriteError(output_directory + "/history.csv");
   }
 
   void
@@ -236,6 +282,9 @@ namespace pneuma
         first_timer = false;
       }
     json << "\n  }\n}\n";
+    json.flush();
+    if (!json)
+      throw WriteError(output_directory + "/summary.json");
   }
 
   void

@@ -83,6 +83,8 @@ namespace pneuma
   Simulator::setup()
   {
     TimerOutput::Scope t(impl->timer, "setup");
+    // The output directory must be writable before any work.
+    impl->output.check_directory(impl->comm);
     impl->model.setup();
   }
 
@@ -180,30 +182,77 @@ namespace pneuma
           << std::endl;
     output.prepare(comm);
 
-    unsigned int last_written = numbers::invalid_unsigned_int;
-    const auto   write_vtu    = [&](const unsigned int             step,
+    // Every write is checked on every rank alike: a rank whose write
+    // failed makes all of them stop (WriteError), none is left waiting.
+    const auto collectively = [&](const auto &write, const std::string &file) {
+      bool failed = false;
+      try
+        {
+          write();
+        }
+      catch (const std::exception &)
+        {
+          failed = true;
+        }
+      if (Utilities::MPI::max(static_cast<unsigned int>(failed), comm) > 0)
+        throw WriteError(file);
+    };
+    unsigned int            last_written = numbers::invalid_unsigned_int;
+    solvers::PathStep       last_step;
+    solvers::BorderedVector last_seen;
+    const auto              write_vtu = [&](const unsigned int             step,
                                const double                   t,
                                const solvers::BorderedVector &state) {
       TimerOutput::Scope ts(timer, "output");
-      model.write_output(output.directory(), step, t, state);
+      collectively(
+        [&]() { model.write_output(output.directory(), step, t, state); },
+        output.directory() + "/solution_" + Utilities::int_to_string(step, 4));
       last_written = step;
     };
     const auto observer = [&](const solvers::PathStep       &step,
                               const solvers::BorderedVector &state) {
+      last_step = step;
+      last_seen = state;
       result.history.push_back(history_row(step, state));
-      output.history_row(result.history.back());
+      collectively([&]() { output.history_row(result.history.back()); },
+                   output.directory() + "/history.csv");
       if (output.write_vtu()
           && (step.step == 0
               || (output.vtu_interval() > 0
                   && step.step % output.vtu_interval() == 0)))
         write_vtu(step.step, step.time, state);
     };
-    const solvers::PathResult path_result =
-      path.run(model, pcout, wall_clock, observer);
-
-    // The last converged state is always written.
-    if (output.write_vtu() && last_written != path_result.steps)
-      write_vtu(path_result.steps, path_result.final_time, path_result.state);
+    // A file that cannot be written stops the run (exit 2) with a message
+    // naming it; the run is never reported a success.
+    std::string         write_error;
+    solvers::PathResult path_result;
+    try
+      {
+        path_result = path.run(model, pcout, wall_clock, observer);
+        // The last converged state is always written.
+        if (output.write_vtu() && last_written != path_result.steps)
+          write_vtu(path_result.steps,
+                    path_result.final_time,
+                    path_result.state);
+      }
+    catch (const WriteError &e)
+      {
+        write_error = e.what();
+        if (path_result.state.field.size() == 0)
+          {
+            // The path stopped inside the observer: its last converged
+            // state is the one the observer saw.
+            path_result.state      = last_seen;
+            path_result.steps      = last_step.step;
+            path_result.final_time = last_step.time;
+            model.current_time     = last_step.time;
+          }
+      }
+    if (!write_error.empty())
+      {
+        path_result.exit_code = solver_failed;
+        path_result.message   = write_error;
+      }
 
     last_state                   = path_result.state;
     result.exit_code             = path_result.exit_code;
@@ -243,7 +292,20 @@ namespace pneuma
     model.add_statistics(row, path_result.state);
     row.add(run, "wall_seconds", "s", wall_clock.wall_time(), counts);
     row.reduce(comm);
-    output.summary(row, result.message, timer);
+    try
+      {
+        output.summary(row, result.message, timer);
+      }
+    catch (const WriteError &e)
+      {
+        result.message   = result.exit_code == success
+                             ? e.what()
+                             : result.message + "; also " + e.what();
+        result.exit_code = solver_failed;
+      }
+    // Every rank ends with the same outcome.
+    result.exit_code =
+      Utilities::MPI::max(static_cast<unsigned int>(result.exit_code), comm);
     output.test_output(row);
     return result;
   }

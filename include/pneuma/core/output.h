@@ -17,10 +17,23 @@
 
 #include <fstream>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 namespace pneuma
 {
+  /// A file of the run could not be written (full disk, removed
+  /// directory); the message names it.
+  class WriteError : public std::runtime_error
+  {
+  public:
+    explicit WriteError(const std::string &file)
+      : std::runtime_error("cannot write '" + file
+                           + "' (is the disk full or the directory gone?)")
+    {
+    }
+  };
+
   /// The "Output" subsection and the writers of history and summary.
   class OutputWriter
   {
@@ -30,8 +43,14 @@ namespace pneuma
     void
     parse_parameters(dealii::ParameterHandler &prm);
 
-    /// Create the directory (rank 0) and start history.csv; throws
-    /// InputError naming Output/Directory if it cannot be written.
+    /// Create the directory and check that it can be written (all ranks
+    /// agree); throws InputError naming Output/Directory if not.
+    void
+    check_directory(const MPI_Comm comm) const;
+
+    /// Check the directory, remove the files of an earlier run there
+    /// (solution_*, cables_*, the .pvd records, history.csv, summary.json,
+    /// refinement.csv, cycle-*/) and start history.csv.
     void
     prepare(const MPI_Comm comm);
 
