@@ -43,7 +43,9 @@ namespace pneuma_test
        const std::string &file = "",
        const MPI_Comm     comm = MPI_COMM_WORLD)
   {
-    std::vector<std::string> overrides;
+    // Never the default directory "output": in a deal.II test folder that
+    // name is the test's own output file.
+    std::vector<std::string> overrides = {"Output/Directory=run-output"};
     for (const auto &s : settings)
       overrides.push_back(s.first + "=" + s.second);
     const auto layout    = file.empty()
