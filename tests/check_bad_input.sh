@@ -125,6 +125,13 @@ check "$dir/valid.prm"              1 "Loads/Surface traction/Function expressio
 check "$c"                          1 "Chambers/Ambient pressure: must be positive" --set "Chambers/Ambient pressure=0"
 check "$c"                          1 "Chambers/Chamber 1/Gas/Gas amount/Function expression: '1/t' is not finite at t = 0" --set "Chambers/Chamber 1/Gas/Gas amount/Function expression=1/t"
 check_mpi "$dir/valid.prm"          1 "Loads/Pressure/Function expression: is not finite at t = 0" --set "Loads/Pressure/Function expression=sqrt(x-1)"
+# Accepted silently before.
+check "$c"                          1 "Boundary conditions/Rigid regions: the mesh has no cells in region 42" --set "Boundary conditions/Rigid regions=1, 2+42"
+check "$dir/valid.prm"              1 "Output/Monitor points: 'nan,0,0' is not a finite point" --set "Output/Monitor points=nan,0,0"
+touch empty.prm
+check "empty.prm"                   1 "empty.prm: sets no parameter"
+check "$dir"                        1 "is a directory, not a parameter file"
+check "$k"                          1 "Contact/Pair 1/Membrane regions: the mesh has no cells in region 5" --set "Geometry/Type=disc" --set "Contact/Number of pairs=1" --set "Contact/Pair 1/Membrane regions=0, 5"
 mkdir -p not_a_directory/history.csv
 check_mpi "$dir/valid.prm"          1 "Output/Directory: cannot write into" --set "Output/Directory=not_a_directory"
 check_mpi "$dir/valid.prm"          1 "Materials/Region 7: no cell of the mesh has material id 7" --set "Materials/Region 0/Thickness=1e-3" --set "Materials/Region 7/Thickness=1e-3"

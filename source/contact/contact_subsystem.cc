@@ -60,6 +60,12 @@ namespace pneuma
     void
     ContactSubsystem::add_locally_relevant(IndexSet &relevant)
     {
+      // Every master region must exist in the mesh.
+      for (unsigned int k = 0; k < parameters.all().size(); ++k)
+        for (const auto id : parameters.all()[k].regions)
+          check_input(membrane.material_ids().count(id) > 0,
+                      parameters.all()[k].path + "/Membrane regions",
+                      "the mesh has no cells in region " + std::to_string(id));
       // Every rank sees the mid-lines of the paired cables.
       contact->setup(membrane.mapping(),
                      membrane.dof_handler(),

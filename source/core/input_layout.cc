@@ -78,7 +78,11 @@ namespace pneuma
   InputLayout::read(const std::string              &file,
                     const std::vector<std::string> &overrides)
   {
-    InputLayout   layout;
+    InputLayout     layout;
+    std::error_code ec;
+    check_input(!std::filesystem::is_directory(file, ec),
+                file,
+                "is a directory, not a parameter file");
     std::ifstream in(file);
     check_input(static_cast<bool>(in), file, "cannot open parameter file");
     std::stringstream text;
@@ -118,6 +122,12 @@ namespace pneuma
       }
     else
       layout.scan_prm(text.str(), file, 0);
+    // An input that sets nothing would run the default scene, which has
+    // no supports: almost certainly not what was meant.
+    check_input(!layout.values.empty() || !overrides.empty(),
+                file,
+                "sets no parameter (an empty file?); pneuma "
+                "--print-parameters lists them all");
     layout.add_overrides(overrides);
     return layout;
   }

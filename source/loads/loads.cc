@@ -42,6 +42,10 @@ namespace pneuma
           {
             throw InputError(path, "'" + xyz[d] + "' is not a number");
           }
+      check_input(std::isfinite(p[0]) && std::isfinite(p[1])
+                    && std::isfinite(p[2]),
+                  path,
+                  "'" + text + "' is not a finite point");
       return p;
     }
 

@@ -124,6 +124,13 @@ namespace pneuma
             comm);
           for (const auto id : all_ids)
             (void)materials[id];
+          mesh_ids =
+            std::set<types::material_id>(all_ids.begin(), all_ids.end());
+          for (const auto id : rigid_regions.all_ids())
+            check_input(mesh_ids.count(id) > 0,
+                        "Boundary conditions/Rigid regions",
+                        "the mesh has no cells in region "
+                          + std::to_string(id));
           for (const auto id : materials.ids())
             check_input(std::find(all_ids.begin(), all_ids.end(), id)
                           != all_ids.end(),

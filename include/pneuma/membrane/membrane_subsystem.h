@@ -32,6 +32,7 @@
 
 #include <array>
 #include <memory>
+#include <set>
 #include <vector>
 
 namespace pneuma
@@ -174,6 +175,12 @@ namespace pneuma
       {
         return fe_degree;
       }
+      /// The material ids of the mesh (every rank).
+      const std::set<types::material_id> &
+      material_ids() const
+      {
+        return mesh_ids;
+      }
       /// The membrane's VTU of the current output (between
       /// add_output_fields and write_output_files).
       DataOut<2, 3> &
@@ -215,6 +222,7 @@ namespace pneuma
 
       parallel::distributed::Triangulation<2, 3> mesh;
       bool                                       mesh_created = false;
+      std::set<types::material_id>               mesh_ids;
       std::unique_ptr<FESystem<2, 3>>            fe;
       std::unique_ptr<Mapping<2, 3>>             mapping_cache;
       DoFHandler<2, 3>                           dofs;
