@@ -10,6 +10,7 @@
 
 #include <pneuma/core/collective_error.h>
 #include <pneuma/core/input_error.h>
+#include <pneuma/core/interrupt.h>
 #include <pneuma/core/simulator.h>
 
 #include <filesystem>
@@ -102,6 +103,7 @@ main(int argc, char **argv)
       return pneuma::bad_input;
     }
 
+  pneuma::install_interrupt_handlers();
   int exit_code = pneuma::success;
   try
     {

@@ -3,6 +3,7 @@
 
 #include <pneuma/core/input_error.h>
 #include <pneuma/core/input_layout.h>
+#include <pneuma/core/interrupt.h>
 #include <pneuma/core/model.h>
 
 #include <cmath>
@@ -473,6 +474,12 @@ namespace pneuma
         sum += c * c;
       }
     return std::sqrt(sum);
+  }
+
+  bool
+  Model::interrupted()
+  {
+    return interrupt_signal(comm) != 0;
   }
 
   std::vector<std::string>

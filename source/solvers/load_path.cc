@@ -1,6 +1,8 @@
+#include <pneuma/core/interrupt.h>
 #include <pneuma/core/model.h>
 #include <pneuma/solvers/load_path.h>
 
+#include <csignal>
 #include <iomanip>
 #include <sstream>
 
@@ -49,6 +51,17 @@ namespace pneuma
 
       while (!stepping.finished(t))
         {
+          // A signal stops the path between steps, or inside Newton
+          // (below), with the last converged state.
+          if (const int signal = interrupt_signal(model.mpi_communicator()))
+            {
+              result.exit_code = 128 + signal;
+              result.message   = std::string("interrupted by ")
+                               + (signal == SIGINT ? "SIGINT" : "SIGTERM")
+                               + ". The last converged state (t = "
+                               + std::to_string(t) + ") is written.";
+              break;
+            }
           // 1. Prepare the step from the last converged state.
           const double t_old = t, t_new = stepping.next_time(t_old, dt);
           last = result.state;
@@ -82,6 +95,12 @@ namespace pneuma
             }
 
           // 3. Reject: back to the last state with a smaller increment.
+          if (!newton.converged && newton.failure_reason == "interrupted")
+            {
+              result.state = last;
+              model.reject_step(t_old);
+              continue; // stops at the top of the loop
+            }
           if (!newton.converged)
             {
               ++result.cutbacks;

@@ -239,6 +239,11 @@ namespace pneuma
               result.convergence_test = "residual";
               return true;
             }
+          if (problem.interrupted())
+            {
+              result.failure_reason = "interrupted";
+              return false;
+            }
           if (it >= phase.max_iterations)
             {
               result.failure_reason = "no convergence in "
@@ -372,7 +377,7 @@ namespace pneuma
       phase.max_iterations  = S::inner_iterations;
       phase.tolerance       = S::inner_tolerance;
       unsigned int failures = 0;
-      while (result.iterations < S::budget * max_iter)
+      while (result.iterations < S::budget * max_iter && !problem.interrupted())
         {
           phase.anchor = u;
           if (!iterate(problem, u, phase, r_ref, out, result))

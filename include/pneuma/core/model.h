@@ -224,6 +224,8 @@ namespace pneuma
     {
       solver.set_forcing(eta);
     }
+    bool
+    interrupted() override;
     std::vector<std::string>
     block_names() const override;
     std::vector<double>

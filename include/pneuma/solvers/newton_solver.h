@@ -81,6 +81,12 @@ namespace pneuma
       {
         (void)eta;
       }
+      /// True if the run was asked to stop (a signal); all ranks agree.
+      virtual bool
+      interrupted()
+      {
+        return false;
+      }
       /// Names of the residual blocks (membrane, cables, chambers, ...).
       virtual std::vector<std::string>
       block_names() const
