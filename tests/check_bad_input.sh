@@ -132,6 +132,11 @@ touch empty.prm
 check "empty.prm"                   1 "empty.prm: sets no parameter"
 check "$dir"                        1 "is a directory, not a parameter file"
 check "$k"                          1 "Contact/Pair 1/Membrane regions: the mesh has no cells in region 5" --set "Geometry/Type=disc" --set "Contact/Number of pairs=1" --set "Contact/Pair 1/Membrane regions=0, 5"
+# Ill-posed scenes: free rigid-body motions, named before any work.
+check "$dir/valid.prm"              1 "Boundary conditions: the membrane is free to move as a rigid body (translation along x; translation along y; translation along z; rotation about x" --set "Boundary conditions/Fixed boundaries="
+check "$w"                          1 "the membrane is free to move as a rigid body (translation along y + rotation about z" --set "Geometry/gmsh/Mesh file=$dir/../../meshes/waterbeam.msh" --set "Boundary conditions/Fixed points=0,0,0: xyz"
+check "$k"                          1 "Cables/Cable 1: has no support (Start support and End support are free) and no contact pair holds it" --set "Cables/Cable 1/Start support=free" --set "Cables/Cable 1/End support=free"
+check "$k"                          1 "Cables/Cable 2: has no support" --set "Cables/Number of cables=2"
 mkdir -p not_a_directory/history.csv
 check_mpi "$dir/valid.prm"          1 "Output/Directory: cannot write into" --set "Output/Directory=not_a_directory"
 check_mpi "$dir/valid.prm"          1 "Materials/Region 7: no cell of the mesh has material id 7" --set "Materials/Region 0/Thickness=1e-3" --set "Materials/Region 7/Thickness=1e-3"

@@ -1,4 +1,5 @@
 #include <pneuma/cables/cable_subsystem.h>
+#include <pneuma/core/input_error.h>
 #include <pneuma/core/input_layout.h>
 #include <pneuma/core/model.h>
 
@@ -126,6 +127,26 @@ namespace pneuma
         return s0;
       // No load: mean(diag K)/mean(diag L) over the free cable dofs.
       return factor * model.diagonal_ratio(range, K, L, constraints);
+    }
+
+    void
+    CableSubsystem::check_well_posed() const
+    {
+      // Before the first factorization: a cable with no support and nothing
+      // that holds it would move as a rigid body.
+      for (unsigned int k = 0; k < parameters.size(); ++k)
+        {
+          const auto &d = parameters[k];
+          check_input(d.start_support != EndSupport::free
+                        || d.end_support != EndSupport::free || held.count(k),
+                      d.path,
+                      std::string("has no support (")
+                        + (d.closed()
+                             ? "a ring has no ends"
+                             : "Start support and End support are free")
+                        + ") and no contact pair holds it: it would move as a "
+                          "rigid body");
+        }
     }
 
     void

@@ -25,6 +25,7 @@ namespace pneuma
       , membrane(the_membrane(model))
       , cables(model.find<cables::CableSubsystem>())
     {
+      membrane.add_restraint();
     }
 
     void
@@ -52,6 +53,8 @@ namespace pneuma
     {
       parameters.parse_parameters(prm,
                                   cables ? cables->definitions().size() : 0);
+      for (const auto &pair : parameters.all())
+        cables->hold(pair.cable);
       contact = std::make_unique<ContactSystem>(parameters,
                                                 membrane.geometry(),
                                                 cables->system());

@@ -175,6 +175,7 @@ namespace pneuma
   Simulator::Impl::run_once()
   {
     RunResult result;
+    model.check_well_posed();
     pcout << "pneuma: " << model.n_dofs() << " dofs in";
     for (const auto &s : model.all())
       pcout << " " << s->name();

@@ -1,6 +1,7 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/mapping_q_cache.h>
+#include <deal.II/lac/lapack_full_matrix.h>
 
 #include <pneuma/core/collective_error.h>
 #include <pneuma/core/input_error.h>
@@ -12,6 +13,7 @@
 
 #include <fstream>
 #include <limits>
+#include <sstream>
 
 namespace pneuma
 {
@@ -244,6 +246,111 @@ namespace pneuma
                   "meshes with junction lines (more than two cells on a "
                   "line) cannot be refined adaptively yet; refine the Gmsh "
                   "mesh instead");
+    }
+
+    void
+    MembraneSubsystem::check_well_posed() const
+    {
+      // A rigid motion r (3 translations, 3 rotations about the centroid,
+      // scaled to unit size over the membrane) is removed by the supports
+      // iff it moves some prescribed dof: the free motions are the null
+      // space of G = sum over prescribed dofs i of r(i) r(i)^T (6 x 6).
+      // Rigid plates and ties follow rigid motions, so they count through
+      // their prescribed masters. Checked before the first factorization,
+      // so that an ill-posed scene is a message, not minutes of cut-backs.
+      std::map<types::global_dof_index, Point<3>> support;
+      DoFTools::map_dofs_to_support_points(*mapping_cache, dofs, support);
+      Point<3> centre;
+      double   count = 0.;
+      for (const auto &[i, x] : support)
+        if (owned_dofs.is_element(i))
+          {
+            centre += x;
+            count += 1.;
+          }
+      for (unsigned int d = 0; d < 3; ++d)
+        centre[d] = Utilities::MPI::sum(centre[d], comm);
+      centre /= std::max(1., Utilities::MPI::sum(count, comm));
+      double size = 0.;
+      for (const auto &[i, x] : support)
+        size = std::max(size, x.distance(centre));
+      size = std::max(Utilities::MPI::max(size, comm), 1e-300);
+
+      const auto        &constraints = model.constraints();
+      FullMatrix<double> G(6, 6);
+      for (unsigned int c = 0; c < 3; ++c)
+        {
+          std::vector<bool> mask(3, false);
+          mask[c] = true;
+          for (const auto i : DoFTools::extract_dofs(dofs, ComponentMask(mask)))
+            if (constraints.is_constrained(i)
+                && constraints.get_constraint_entries(i)->empty())
+              {
+                const Tensor<1, 3> r = (support.at(i) - centre) / size;
+                double             row[6];
+                for (unsigned int a = 0; a < 3; ++a)
+                  {
+                    Tensor<1, 3> e;
+                    e[a]       = 1.;
+                    row[a]     = (a == c) ? 1. : 0.;
+                    row[3 + a] = cross_product_3d(e, r)[c];
+                  }
+                for (unsigned int j = 0; j < 6; ++j)
+                  for (unsigned int k = 0; k < 6; ++k)
+                    G(j, k) += row[j] * row[k];
+              }
+        }
+      double trace = 0.;
+      for (unsigned int j = 0; j < 6; ++j)
+        for (unsigned int k = 0; k < 6; ++k)
+          {
+            G(j, k) = Utilities::MPI::sum(G(j, k), comm);
+            if (j == k)
+              trace += G(j, j);
+          }
+
+      // The free motions: eigenvectors of G with (numerically) zero
+      // eigenvalue, described by their leading terms.
+      LAPACKFullMatrix<double> lapack(6, 6);
+      lapack = G;
+      Vector<double>     values;
+      FullMatrix<double> vectors;
+      lapack.compute_eigenvalues_symmetric(
+        -1., 1e-10 * std::max(trace, 1.), 1e-14, values, vectors);
+      if (values.size() == 0)
+        return;
+      const char        *names[6] = {"translation along x",
+                                     "translation along y",
+                                     "translation along z",
+                                     "rotation about x",
+                                     "rotation about y",
+                                     "rotation about z"};
+      std::ostringstream free;
+      for (unsigned int m = 0; m < values.size(); ++m)
+        {
+          free << (m ? "; " : "");
+          bool first = true;
+          for (unsigned int j = 0; j < 6; ++j)
+            if (std::abs(vectors(j, m)) > 0.3)
+              {
+                free << (first ? "" : " + ") << names[j];
+                first = false;
+              }
+        }
+      std::ostringstream where;
+      where << centre;
+      const std::string message =
+        "the membrane is free to move as a rigid body (" + free.str()
+        + "; rotations about its centroid (" + where.str()
+        + ")): add supports (Fixed points, Fixed boundaries, Fixed regions) "
+          "that hold it";
+      // Contact with supported cables may hold it; then it is a warning.
+      if (coupled_to_others)
+        {
+          model.out() << "pneuma: warning: " << message << std::endl;
+          return;
+        }
+      throw InputError("Boundary conditions", message);
     }
 
     void

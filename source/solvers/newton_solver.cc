@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <iomanip>
+#include <regex>
 
 namespace pneuma
 {
@@ -262,12 +263,19 @@ namespace pneuma
             }
           catch (const std::exception &e)
             {
-              result.failure_reason = "linear solver failed";
+              // The whole message (without deal.II's frame and stack
+              // trace) reaches the log and the failure reason.
+              std::string text = e.what();
+              const auto  info = text.find("Additional information:");
+              if (info != std::string::npos)
+                text = text.substr(info + 23);
+              text = text.substr(0, text.find("Stacktrace:"));
+              text = std::regex_replace(text, std::regex("-{3,}"), " ");
+              const std::string message = Utilities::trim(
+                std::regex_replace(text, std::regex("\\s+"), " "));
+              result.failure_reason = "linear solver failed: " + message;
               if (print_table)
-                out << "    (linear solver: "
-                    << Utilities::trim(std::string(e.what()).substr(
-                         0, std::string(e.what()).find('\n', 1) + 200))
-                    << ")\n";
+                out << "    (linear solver: " << message << ")\n";
               return false;
             }
           ++result.iterations;

@@ -13,6 +13,8 @@
 #include <pneuma/cables/cable_system.h>
 #include <pneuma/core/subsystem.h>
 
+#include <set>
+
 namespace pneuma
 {
   namespace cables
@@ -85,6 +87,16 @@ namespace pneuma
                          const double       t,
                          const LA::Vector  &field) override;
 
+      void
+      check_well_posed() const override;
+      /// Cable @p k (0-based) touches something that may hold it (a
+      /// contact pair): a cable without supports is then allowed.
+      void
+      hold(const unsigned int k)
+      {
+        held.insert(k);
+      }
+
       /// The cable block (for the contact).
       CableSystem &
       system()
@@ -98,9 +110,10 @@ namespace pneuma
       }
 
     private:
-      Model          &model;
-      CableParameters parameters;
-      CableSystem     cables;
+      Model                 &model;
+      CableParameters        parameters;
+      CableSystem            cables;
+      std::set<unsigned int> held;
     };
   } // namespace cables
 } // namespace pneuma

@@ -161,6 +161,14 @@ namespace pneuma
     /// The ghosted copy of @p field (a member buffer).
     const LA::Vector &
     ghost(const LA::Vector &field);
+    /// Every subsystem's check that the scene is well posed (before any
+    /// work of a run).
+    void
+    check_well_posed() const
+    {
+      for (const auto &s : subsystems)
+        s->check_well_posed();
+    }
     /// The reference state at pseudo time 0: prescribed values, every
     /// subsystem initialized.
     solvers::BorderedVector

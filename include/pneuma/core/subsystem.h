@@ -215,6 +215,14 @@ namespace pneuma
       (void)field;
     }
 
+    /// Before a run's first factorization: throw an InputError naming
+    /// what the scene leaves free (rigid-body motions, unsupported
+    /// bodies). Not called by finite-difference checks of the tangent.
+    virtual void
+    check_well_posed() const
+    {
+    }
+
     // ---- the life of a step
     /// Write the prescribed values at pseudo time @p t into the owned
     /// entries of @p field.

@@ -150,6 +150,13 @@ namespace pneuma
       /// Add terms to the membrane's cell loop (kept until destruction).
       void
       add_cell_terms(CellTerms &terms);
+      /// A subsystem that may hold the membrane in place (contact with
+      /// supported cables) says so: free rigid motions are then a warning.
+      void
+      add_restraint()
+      {
+        coupled_to_others = true;
+      }
       const Mapping<2, 3> &
       mapping() const
       {
@@ -205,6 +212,10 @@ namespace pneuma
       shared_masters() const;
       void
       locate_monitor_points();
+      /// InputError naming the rigid-body motions the supports leave free
+      /// (a warning when other subsystems may hold the membrane).
+      void
+      check_well_posed() const override;
       void
       compute_reactions(const LA::Vector      &u,
                         std::array<double, 3> &reaction,
@@ -230,7 +241,10 @@ namespace pneuma
       geometry::JunctionTies                     junction_ties;
       std::unique_ptr<MembraneAssembler>         assembler;
       std::vector<CellTerms *>                   cell_terms;
-      double                                     reference_volume = 0.;
+      /// Other subsystems act on the membrane through forces that may hold
+      /// it (contact): free rigid motions are then only a warning.
+      bool   coupled_to_others = false;
+      double reference_volume  = 0.;
 
       // Monitor points: (owning rank's) dof indices of the nearest vertex.
       std::vector<std::array<types::global_dof_index, 3>> monitor_dofs;
