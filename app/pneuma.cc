@@ -25,14 +25,18 @@ namespace
   {
     out << "pneuma: inflatable membrane structures (deal.II)\n\n"
         << "Usage:\n"
-        << "  pneuma FILE.prm [--set \"Path/To/Entry=value\"]...\n"
+        << "  pneuma FILE.prm [--set \"Path/To/Entry=value\"]... "
+           "[--restart DIR]\n"
         << "  mpirun -np N pneuma FILE.prm\n"
         << "  pneuma --print-parameters        every parameter with default, "
            "pattern and doc\n"
         << "  pneuma --print-parameters-json   the same as JSON (for tools)\n"
         << "  pneuma --help\n\n"
+        << "  --restart DIR continues the run of the checkpoint in DIR "
+           "(Output/Directory/checkpoint)\n\n"
         << "Exit codes: 0 success, 1 bad input, 2 solver failure "
-           "(last converged state written).\n";
+           "(last converged state written), 130/143 stopped by SIGINT/"
+           "SIGTERM (checkpoint written).\n";
   }
 } // namespace
 
@@ -45,6 +49,7 @@ main(int argc, char **argv)
 
   std::string              file;
   std::vector<std::string> overrides;
+  std::string              restart;
   for (int i = 1; i < argc; ++i)
     {
       const std::string arg = argv[i];
@@ -79,6 +84,18 @@ main(int argc, char **argv)
               return pneuma::bad_input;
             }
           overrides.emplace_back(argv[++i]);
+          continue;
+        }
+      if (arg == "--restart")
+        {
+          if (i + 1 >= argc)
+            {
+              if (root)
+                std::cerr << "pneuma: --restart needs a checkpoint "
+                             "directory\n";
+              return pneuma::bad_input;
+            }
+          restart = argv[++i];
           continue;
         }
       if (!arg.empty() && arg[0] == '-')
@@ -121,6 +138,8 @@ main(int argc, char **argv)
           simulator->declare_parameters(prm);
           pneuma::parse_input(prm, file, overrides);
           simulator->parse_parameters(prm);
+          if (!restart.empty())
+            simulator->restart_from(restart);
           simulator->setup();
           // Keep a copy of the parameters as used.
           prm.enter_subsection("Output");
@@ -178,6 +197,8 @@ main(int argc, char **argv)
                       << ", " << x[2] << "): u = (" << u[0] << ", " << u[1]
                       << ", " << u[2] << ") m" << std::endl;
           }
+      if (root && exit_code == pneuma::success && !result.message.empty())
+        std::cout << "pneuma: " << result.message << std::endl;
       if (root && exit_code == pneuma::success)
         std::cout << "pneuma: finished, " << summary.get("steps") << " steps, "
                   << summary.get("newton_iterations") << " Newton iterations, "

@@ -6,6 +6,7 @@
 # WORK_DIRECTORY (ctest passes build/tests/bad_input), else into a temporary
 # directory removed at exit; never into the caller's directory, which may be
 # the source tree.
+self="$(realpath -- "$0")"
 case "$1" in */*) pneuma="$(realpath -- "$1")" ;; *) pneuma="$1" ;; esac
 dir="$(realpath -- "$2")"
 if [ -n "$3" ]; then
@@ -15,6 +16,12 @@ else
   trap 'rm -rf -- "$work"' EXIT
 fi
 fail=0
+# No output of any case holds a non-finite number: history.csv fields and
+# summary.json values (VTU files are read back at the end).
+non_finite() {
+  grep -lsE '(^|[,:\[ ])-?(nan|inf|NaN|Infinity)([],} ]|$)' \
+    $(find . -name history.csv -o -name summary.json 2>/dev/null)
+}
 check() { # case-file, expected exit code, text the message must contain
   local out code
   out=$("$pneuma" "${@:4}" "$1" 2>&1)
@@ -22,25 +29,28 @@ check() { # case-file, expected exit code, text the message must contain
   # One message: a single line, and never deal.II's multi-line frames.
   if [ "$code" -ne "$2" ] || ! grep -qF -- "$3" <<<"$out" ||
      { [ "$2" -ne 0 ] && [ "$(wc -l <<<"$out")" -ne 1 ]; }; then
-    echo "FAIL $(basename "$1"): exit $code, message: $out"
+    echo "FAIL $(basename -- "$1"): exit $code, message: $out"
+    fail=1
+  elif [ -n "$(non_finite)" ]; then
+    echo "FAIL $(basename -- "$1") $4 $5: non-finite numbers in $(non_finite)"
     fail=1
   else
-    echo "ok   $(basename "$1"): exit $code: $(head -c 200 <<<"$out" | tr '\n' ' ')"
+    echo "ok   $(basename -- "$1"): exit $code: $(head -c 200 <<<"$out" | tr '\n' ' ')"
   fi
 }
 # The same on 2 MPI ranks: every rank agrees, one message, exit 1, no rank
 # left waiting (mpirun's own banner about the exit code is dropped).
-check_mpi() { # like check, on 2 ranks
+check_mpi() { # like check, on 2 ranks (NP=3: on 3)
   local out code
-  out=$(timeout 300 mpirun -np 2 "$pneuma" "${@:4}" "$1" 2>&1 |
+  out=$(timeout 300 mpirun -np "${NP:-2}" "$pneuma" "${@:4}" "$1" 2>&1 |
         sed '/^-\{20,\}$/,/^-\{20,\}$/d'; exit "${PIPESTATUS[0]}")
   code=$?
   if [ "$code" -ne "$2" ] || ! grep -qF -- "$3" <<<"$out" ||
      { [ "$2" -ne 0 ] && [ "$(grep -c . <<<"$out")" -ne 1 ]; }; then
-    echo "FAIL (2 ranks) $(basename "$1"): exit $code, message: $out"
+    echo "FAIL (${NP:-2} ranks) $(basename "$1"): exit $code, message: $out"
     fail=1
   else
-    echo "ok   (2 ranks) $(basename "$1"): exit $code: $(head -c 200 <<<"$out" | tr '\n' ' ')"
+    echo "ok   (${NP:-2} ranks) $(basename "$1"): exit $code: $(head -c 200 <<<"$out" | tr '\n' ' ')"
   fi
 }
 check "$dir/unknown_parameter.prm"  1 "Nonexistent entry"
@@ -144,6 +154,71 @@ check_mpi "$dir/valid.prm"          1 "Geometry/disc/Radius: must be positive" -
 check_mpi "$k"                      1 "Cables/Cable 3: is not used" --set "Cables/Cable 3/Density=1"
 check_mpi "$c"                      1 "walls face into the chamber" --set "Chambers/Chamber 1/Regions=-0, -1, -2"
 check_mpi "$dir/valid.prm"          0 "finished"
+# Parameters: patterns, ranges, command line.
+check "$dir/valid.prm"              1 "Materials/Region 0/Thickness: The string <nan> does not match" --set "Materials/Region 0/Thickness=nan"
+check "$dir/valid.prm"              1 "Materials/Region 0/Thickness: The string <inf> does not match" --set "Materials/Region 0/Thickness=inf"
+check "$dir/valid.prm"              1 "Materials/Region 0/Saint Venant-Kirchhoff/Young's modulus: must be positive" --set "Materials/Region 0/Saint Venant-Kirchhoff/Young's modulus=0"
+check "$dir/valid.prm"              1 "Materials/Region 0/neo-Hookean/Shear modulus: The string <inf>" --set "Materials/Region 0/Law=neo-Hookean" --set "Materials/Region 0/neo-Hookean/Shear modulus=inf"
+check "$dir/valid.prm"              1 "Load stepping/Initial increment: must be > 0" --set "Load stepping/Initial increment=0"
+check "$dir/valid.prm"              1 "Load stepping/Initial increment: The string <nan>" --set "Load stepping/Initial increment=nan"
+check "$dir/valid.prm"              1 "Load stepping/Minimum increment: must be > 0 and <= Initial increment" --set "Load stepping/Minimum increment=0.5" --set "Load stepping/Initial increment=0.1"
+check "$dir/valid.prm"              1 "Load stepping/Stage ends: no such entry (pneuma --print-parameters lists them all)" --set "Load stepping/Stage ends=1, 0.5"
+check "$dir/valid.prm"              1 "Newton/Maximum iterations: The string <0>" --set "Newton/Maximum iterations=0"
+check "$dir/valid.prm"              1 "Newton/Residual tolerance: The string <-1>" --set "Newton/Residual tolerance=-1"
+check "$dir/valid.prm"              1 "Output/VTU interval: The string <-1>" --set "Output/VTU interval=-1"
+check "$dir/valid.prm"              1 "Output/Monitor points: '1,2' is not of the form x, y, z" --set "Output/Monitor points=1,2"
+check "$dir/valid.prm"              1 "Output/Directory: must not be empty" --set "Output/Directory="
+check "$dir/valid.prm"              1 "Discretisation/Polynomial degree: The string <0>" --set "Discretisation/Polynomial degree=0"
+check "$dir/valid.prm"              1 "more than one parameter file given" "$dir/valid.prm"
+check "$dir/valid.prm"              1 "--set Geometry: expected Path/To/Entry=value" --set "Geometry"
+check "$dir/valid.prm"              1 "--set =1: empty parameter path" --set "=1"
+check "$dir/valid.prm"              1 "Loads/Pressure regions: The string <x>" --set "Loads/Pressure regions=x"
+check "$dir/valid.prm"              1 "Boundary conditions/Fixed boundaries: component 'w' is not one of x, y, z" --set "Boundary conditions/Fixed boundaries=0: xyw"
+check "$dir/valid.prm"              1 "Boundary conditions/Fixed points: 'nan,0,0' is not a finite point" --set "Boundary conditions/Fixed points=nan,0,0: xyz"
+check "$k"                          1 "Cables/Cable 1/Number of elements: The string <0>" --set "Cables/Cable 1/Number of elements=0"
+check "$k"                          1 "Cables/Cable 1/Section semi-axes: The string <-0.01>" --set "Cables/Cable 1/Section semi-axes=-0.01"
+check "$k"                          1 "Cables/Cable 1/Young's modulus: must be > 0" --set "Cables/Cable 1/Young's modulus=0"
+check "$k"                          1 "Cables/Cable 1/Prestress force: The string <nan>" --set "Cables/Cable 1/Prestress force=nan"
+check "$k"                          1 "Cables/Cable 1/Shape: The string <spiral>" --set "Cables/Cable 1/Shape=spiral"
+check "$k"                          1 "Cables/Cable 1/Start support: The string <glued>" --set "Cables/Cable 1/Start support=glued"
+check "$c"                          1 "Chambers/Chamber 1/Regions: is empty: a chamber needs walls" --set "Chambers/Chamber 1/Regions="
+check "$c"                          1 "Chambers/Chamber 2/Regions: is empty: a chamber needs walls" --set "Chambers/Number of chambers=2"
+check "$c"                          1 "Chambers/Chamber 1/Liquid/Density: The string <-1000>" --set "Chambers/Chamber 1/Filling=liquid" --set "Chambers/Chamber 1/Liquid/Density=-1000"
+check "$c"                          1 "Chambers/Chamber 1/Filling: The string <water>" --set "Chambers/Chamber 1/Filling=water"
+check "$c"                          1 "Chambers/Ambient pressure: The string <inf>" --set "Chambers/Ambient pressure=inf"
+# Cable loads that are not finite at t = 0.
+check "$k"                          1 "Cables/Cable 1/Distributed load/Function expression: is not finite at t = 0" --set "Cables/Cable 1/Distributed load/Function expression=0; 0; 1/t"
+check "$k"                          1 "Cables/Cable 1/End force/Function expression: '0; 0; log(t)' is not finite at t = 0" --set "Cables/Cable 1/End force/Function expression=0; 0; log(t)"
+check "$k"                          1 "Cables/Cable 1/Start displacement/Function expression: '0; 0; 1/t' is not finite" --set "Cables/Cable 1/Start displacement/Function expression=0; 0; 1/t"
+# Sizes: lengths in metres, the size guard.
+check "$dir/valid.prm"              1 "Geometry/disc: the membrane spans inf m; lengths are in metres" --set "Geometry/disc/Radius=1e300"
+check "$dir/valid.prm"              1 "Geometry/disc: the membrane spans 2.83e-09 m" --set "Geometry/disc/Radius=1e-9"
+check "$dir/valid.prm"              1 "Geometry/Global refinements: 12 refinements of 12 coarse cells make 2.01e+08 cells and about 6.04e+08 unknowns, which need about" --set "Geometry/Global refinements=12"
+check "$dir/valid.prm"              1 "Geometry/Global refinements: 1 refinements of 12 coarse cells make 48 cells and about 144 unknowns, which need about 0.2 GB of memory; the limit is 0.001 GB" --set "Geometry/Memory limit=0.001"
+check "$dir/valid.prm"              1 "Geometry/Global refinements: The string <13>" --set "Geometry/Global refinements=13"
+NP=3 check_mpi "$dir/valid.prm"     1 "Geometry/Global refinements: 12 refinements" --set "Geometry/Global refinements=12"
+# Checkpoints: missing, damaged, of another scene, not allowed.
+check --restart                     1 "--restart needs a checkpoint directory" "$dir/valid.prm"
+check "$dir/valid.prm"              1 "--restart /nonexistent: cannot open '/nonexistent/state.bin' (is it a checkpoint directory?)" --restart /nonexistent
+check "$dir/valid.prm"              1 "Checkpoint/Interval minutes: The string <-1>" --set "Checkpoint/Interval minutes=-1"
+check "$dir/valid.prm"              1 "Checkpoint: adaptive refinement studies (Adaptive refinement/Cycles > 0) cannot be checkpointed" --set "Checkpoint/Interval steps=1" --set "Adaptive refinement/Cycles=1"
+check "$dir/valid.prm"              0 "stopped after step 1 as asked" --set "Output/Directory=cp" --set "Checkpoint/Stop after step=1"
+check "$dir/valid.prm"              0 "finished, 3 steps" --set "Output/Directory=cp-continued" --restart cp/checkpoint
+check "$dir/valid.prm"              1 "--restart cp/checkpoint: adaptive refinement studies (Adaptive refinement/Cycles > 0) cannot be restarted" --set "Adaptive refinement/Cycles=1" --restart cp/checkpoint
+check "$dir/valid.prm"              1 "--restart cp/checkpoint: the checkpoint's mesh has 12 coarse cells, this input's 1: it belongs to another geometry" --set "Geometry/Type=square" --restart cp/checkpoint
+check "$dir/valid.prm"              1 "--restart cp/checkpoint: the checkpoint is of another scene (171 unknowns in membrane; this input has 627 in membrane)" --set "Discretisation/Polynomial degree=2" --restart cp/checkpoint
+check "$k"                          1 "--restart cp/checkpoint: the checkpoint is of another scene (171 unknowns in membrane; this input has 186 in membrane, cables)" --set "Geometry/Type=disc" --set "Geometry/disc/Radius=0.1" --set "Boundary conditions/Fixed boundaries=0: xyz" --restart cp/checkpoint
+mkdir -p broken && cp -r cp/checkpoint broken/ && head -c 40 cp/checkpoint/state.bin > broken/checkpoint/state.bin
+check "$dir/valid.prm"              1 "--restart broken/checkpoint: 'broken/checkpoint/state.bin' is truncated" --restart broken/checkpoint
+mkdir -p nomesh && cp -r cp/checkpoint nomesh/ && rm nomesh/checkpoint/membrane.mesh_fixed.data
+check "$dir/valid.prm"              1 "--restart nomesh/checkpoint: has no readable mesh" --restart nomesh/checkpoint
+echo "not a checkpoint" > broken/checkpoint/state.bin
+check "$dir/valid.prm"              1 "--restart broken/checkpoint: 'broken/checkpoint/state.bin' is not a pneuma checkpoint" --restart broken/checkpoint
+check_mpi "$dir/valid.prm"          1 "--restart /nonexistent: cannot open" --restart /nonexistent
+check_mpi "$dir/valid.prm"          0 "finished, 3 steps" --set "Output/Directory=cp-continued-2" --restart cp/checkpoint
+NP=3 check_mpi "$dir/valid.prm"     1 "--restart nomesh/checkpoint: has no readable mesh" --restart nomesh/checkpoint
+NP=3 check_mpi "$c"                 1 "walls face into the chamber" --set "Chambers/Chamber 1/Regions=-0, -1, -2"
+NP=3 check_mpi "$dir/valid.prm"     1 "Output/Directory: cannot write into" --set "Output/Directory=not_a_directory"
 # A rerun into the same directory leaves no file of the earlier run.
 "$pneuma" "$dir/valid.prm" --set "Output/Directory=rerun" --set "Output/Write VTU=true" \
   --set "Loads/Pressure/Function expression=100*t" --set "Load stepping/Initial increment=0.05" \
@@ -158,5 +233,11 @@ if [ -e rerun/solution_0010.pvtu ] || [ ! -e rerun/my_notes.txt ] ||
 else
   echo "ok   rerun: only the files of the new run (and the user's own) are left"
 fi
+# Every VTU any case wrote reads back finite.
+for d in $(find . -name '*.pvtu' -printf '%h\n' | sort -u); do
+  /usr/bin/python3 "$dir/../check_outputs_finite.py" "$d" > /dev/null || { echo "FAIL non-finite output in $d"; fail=1; }
+done
+n_cases=$(grep -cE '^(NP=3 )?check(_mpi)? ' "$self")
+echo "$n_cases cases"
 if [ $fail -eq 0 ]; then echo "all bad inputs rejected cleanly"; fi
 exit $fail

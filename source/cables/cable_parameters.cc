@@ -268,20 +268,18 @@ namespace pneuma
           loads::parse_function(prm,
                                 *d.start_displacement,
                                 "Start displacement",
-                                path + "/Start displacement");
+                                path + "/Start displacement",
+                                true);
           loads::parse_function(prm,
                                 *d.end_displacement,
                                 "End displacement",
-                                path + "/End displacement");
+                                path + "/End displacement",
+                                true);
           d.has_end_forces = s.end_forces;
-          loads::parse_function(prm,
-                                *d.start_force,
-                                "Start force",
-                                path + "/Start force");
-          loads::parse_function(prm,
-                                *d.end_force,
-                                "End force",
-                                path + "/End force");
+          loads::parse_function(
+            prm, *d.start_force, "Start force", path + "/Start force", true);
+          loads::parse_function(
+            prm, *d.end_force, "End force", path + "/End force", true);
           loads::parse_function(prm,
                                 *d.distributed_load,
                                 "Distributed load",
@@ -290,10 +288,8 @@ namespace pneuma
           d.has_distributed_load =
             !is_zero_expression(prm.get("Function expression"));
           prm.leave_subsection();
-          loads::parse_function(prm,
-                                *d.end_moment,
-                                "End moment",
-                                path + "/End moment");
+          loads::parse_function(
+            prm, *d.end_moment, "End moment", path + "/End moment", true);
           prm.enter_subsection("End moment");
           d.has_end_moment =
             !is_zero_expression(prm.get("Function expression"));

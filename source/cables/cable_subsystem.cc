@@ -150,6 +150,19 @@ namespace pneuma
     }
 
     void
+    CableSubsystem::save_checkpoint(Checkpoint &checkpoint,
+                                    const LA::Vector &) const
+    {
+      cables.save_checkpoint(checkpoint);
+    }
+
+    void
+    CableSubsystem::load_checkpoint(const Checkpoint &checkpoint, LA::Vector &)
+    {
+      cables.load_checkpoint(checkpoint);
+    }
+
+    void
     CableSubsystem::set_prescribed_values(const double t,
                                           LA::Vector  &field) const
     {

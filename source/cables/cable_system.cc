@@ -8,7 +8,9 @@
 #include <pneuma/cables/cable_element.h>
 #include <pneuma/cables/cable_shape.h>
 #include <pneuma/cables/cable_system.h>
+#include <pneuma/core/checkpoint.h>
 #include <pneuma/core/input_error.h>
+#include <pneuma/loads/loads.h>
 
 #include <algorithm>
 #include <fstream>
@@ -163,6 +165,16 @@ namespace pneuma
           const CableDefinition &d = parameters[k];
           auto                   b = std::make_unique<Body>(d);
           d.shape->create_mesh(d.n_elements, b->tria);
+          // The distributed load must be finite along the cable at t = 0.
+          {
+            std::vector<Point<3>> nodes(b->tria.get_vertices());
+            d.distributed_load->set_time(0.);
+            const std::string bad =
+              loads::first_non_finite(*d.distributed_load, nodes);
+            check_input(bad.empty(),
+                        d.path + "/Distributed load/Function expression",
+                        bad);
+          }
           CableElement &element = b->element;
           b->n_components       = element.n_components();
           b->fe =
@@ -621,6 +633,38 @@ namespace pneuma
           b->section_rotation =
             b->element.commit_end_moment(M, node_reference, node_u);
         }
+    }
+
+    void
+    CableSystem::save_checkpoint(Checkpoint &checkpoint) const
+    {
+      std::vector<std::vector<double>> state;
+      for (const auto &b : bodies)
+        {
+          state.push_back(b->element.committed_state());
+          state.back().push_back(b->section_rotation);
+        }
+      checkpoint.put("cables/state", state);
+      checkpoint.put("cables/pvd", pvd_records);
+    }
+
+    void
+    CableSystem::load_checkpoint(const Checkpoint &checkpoint)
+    {
+      auto state =
+        checkpoint.get<std::vector<std::vector<double>>>("cables/state");
+      check_input(state.size() == bodies.size(),
+                  "--restart " + checkpoint.directory(),
+                  "the checkpoint has " + std::to_string(state.size())
+                    + " cables, the input " + std::to_string(bodies.size()));
+      for (unsigned int k = 0; k < bodies.size(); ++k)
+        {
+          bodies[k]->section_rotation = state[k].back();
+          state[k].pop_back();
+          bodies[k]->element.restore_state(state[k]);
+        }
+      pvd_records = checkpoint.get<std::vector<std::pair<double, std::string>>>(
+        "cables/pvd");
     }
 
     std::vector<CableReport>

@@ -168,6 +168,29 @@ namespace pneuma
       system.commit_step(field, t, model.out());
     }
 
+    void
+    ChamberSubsystem::save_checkpoint(Checkpoint &checkpoint,
+                                      const LA::Vector &) const
+    {
+      system.save_checkpoint(checkpoint);
+    }
+
+    void
+    ChamberSubsystem::load_checkpoint(const Checkpoint &checkpoint,
+                                      LA::Vector &)
+    {
+      system.load_checkpoint(checkpoint);
+      restored = true;
+    }
+
+    void
+    ChamberSubsystem::refresh(const LA::Vector &field)
+    {
+      if (restored)
+        system.record(field);
+      restored = false;
+    }
+
     double
     ChamberSubsystem::force_scale(const LA::Vector &) const
     {

@@ -1,4 +1,5 @@
 #include <pneuma/chambers/chamber_system.h>
+#include <pneuma/core/checkpoint.h>
 #include <pneuma/core/input_error.h>
 
 #include <cmath>
@@ -508,6 +509,47 @@ namespace pneuma
           // Only the amount changed since record(): no second assembly.
           for (const auto c : g.members)
             chamber_reports[c].gas_amount = g.amount;
+        }
+    }
+
+    void
+    ChamberSystem::save_checkpoint(Checkpoint &checkpoint) const
+    {
+      std::vector<std::vector<double>> state;
+      for (const auto &g : groups)
+        state.push_back({g.p,
+                         g.h,
+                         g.V0,
+                         g.amount,
+                         g.sealed ? 1. : 0.,
+                         g.empty ? 1. : 0.,
+                         g.old.pressure,
+                         g.old.volume,
+                         g.old.amount});
+      checkpoint.put("chambers/groups", state);
+    }
+
+    void
+    ChamberSystem::load_checkpoint(const Checkpoint &checkpoint)
+    {
+      const auto state =
+        checkpoint.get<std::vector<std::vector<double>>>("chambers/groups");
+      check_input(state.size() == groups.size(),
+                  "--restart " + checkpoint.directory(),
+                  "the checkpoint has " + std::to_string(state.size())
+                    + " chamber groups, the input "
+                    + std::to_string(groups.size()));
+      for (unsigned int k = 0; k < groups.size(); ++k)
+        {
+          auto       &g = groups[k];
+          const auto &s = state[k];
+          g.p           = s[0];
+          g.h           = s[1];
+          g.V0          = s[2];
+          g.amount      = s[3];
+          g.sealed      = s[4] != 0.;
+          g.empty       = s[5] != 0.;
+          g.old         = GasState{s[6], s[7], s[8]};
         }
     }
 

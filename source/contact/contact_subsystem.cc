@@ -114,6 +114,20 @@ namespace pneuma
     }
 
     void
+    ContactSubsystem::save_checkpoint(Checkpoint &checkpoint,
+                                      const LA::Vector &) const
+    {
+      contact->save_checkpoint(checkpoint);
+    }
+
+    void
+    ContactSubsystem::load_checkpoint(const Checkpoint &checkpoint,
+                                      LA::Vector &)
+    {
+      contact->load_checkpoint(checkpoint);
+    }
+
+    void
     ContactSubsystem::refresh(const LA::Vector &field)
     {
       contact->assemble(field, model.constraints(), nullptr, nullptr);

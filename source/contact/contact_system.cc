@@ -3,6 +3,8 @@
 #include <deal.II/fe/fe_system.h>
 
 #include <pneuma/contact/contact_system.h>
+#include <pneuma/core/checkpoint.h>
+#include <pneuma/core/input_error.h>
 
 #include <cmath>
 #include <limits>
@@ -493,6 +495,64 @@ namespace pneuma
         {
           d.anchor    = d.pending_anchor;
           d.anchor_xi = d.pending_xi;
+        }
+    }
+
+    void
+    ContactSystem::save_checkpoint(Checkpoint &checkpoint) const
+    {
+      // Per pair and point: the anchor's cell id (empty: none) and its
+      // convective coordinates, from the rank that holds it.
+      using Anchor = std::pair<std::string, std::vector<double>>;
+      std::vector<std::vector<Anchor>> anchors(pairs.size());
+      for (unsigned int k = 0; k < pairs.size(); ++k)
+        {
+          const PairData     &d = pairs[k];
+          std::vector<Anchor> local(d.anchor.size());
+          for (unsigned int q = 0; q < d.anchor.size(); ++q)
+            if (d.anchor[q] >= 0)
+              local[q] = {masters[d.anchor[q]].cell->id().to_string(),
+                          {d.anchor_xi[q][0], d.anchor_xi[q][1]}};
+          const auto all = Utilities::MPI::gather(comm, local, 0);
+          anchors[k]     = local;
+          for (const auto &part : all)
+            for (unsigned int q = 0; q < part.size(); ++q)
+              if (!part[q].first.empty())
+                anchors[k][q] = part[q];
+        }
+      checkpoint.put("contact/anchors", anchors);
+    }
+
+    void
+    ContactSystem::load_checkpoint(const Checkpoint &checkpoint)
+    {
+      using Anchor = std::pair<std::string, std::vector<double>>;
+      const auto saved =
+        checkpoint.get<std::vector<std::vector<Anchor>>>("contact/anchors");
+      check_input(saved.size() == pairs.size(),
+                  "--restart " + checkpoint.directory(),
+                  "the checkpoint has another number of contact pairs");
+      std::map<std::string, int> local;
+      for (unsigned int m = 0; m < masters.size(); ++m)
+        local[masters[m].cell->id().to_string()] = m;
+      for (unsigned int k = 0; k < pairs.size(); ++k)
+        {
+          PairData &d = pairs[k];
+          check_input(saved[k].size() == d.anchor.size(),
+                      "--restart " + checkpoint.directory(),
+                      "the checkpoint has another number of contact points");
+          for (unsigned int q = 0; q < d.anchor.size(); ++q)
+            {
+              const auto it = saved[k][q].first.empty()
+                                ? local.end()
+                                : local.find(saved[k][q].first);
+              d.anchor[q]   = it == local.end() ? -1 : it->second;
+              if (it != local.end())
+                d.anchor_xi[q] =
+                  Point<2>(saved[k][q].second[0], saved[k][q].second[1]);
+            }
+          d.pending_anchor = d.anchor;
+          d.pending_xi     = d.anchor_xi;
         }
     }
 

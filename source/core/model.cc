@@ -1,6 +1,7 @@
 #include <deal.II/base/array_view.h>
 #include <deal.II/lac/sparsity_tools.h>
 
+#include <pneuma/core/checkpoint.h>
 #include <pneuma/core/input_error.h>
 #include <pneuma/core/input_layout.h>
 #include <pneuma/core/interrupt.h>
@@ -271,6 +272,96 @@ namespace pneuma
     return state;
   }
 
+  void
+  Model::save_checkpoint(Checkpoint                    &checkpoint,
+                         const solvers::BorderedVector &state)
+  {
+    ghost(state.field);
+    std::vector<std::string> names;
+    for (const auto &s : subsystems)
+      names.push_back(s->name());
+    checkpoint.put("model/subsystems", names);
+    checkpoint.put("model/dofs", static_cast<std::uint64_t>(n_dofs()));
+    checkpoint.put("model/border",
+                   std::vector<double>(state.border.begin(),
+                                       state.border.end()));
+    // The counts at the last converged step: work of a step a signal cut
+    // short is done again after the restart.
+    checkpoint.put("model/counts", committed_counts);
+    for (unsigned int k = 0; k < subsystems.size(); ++k)
+      {
+        if (!subsystems[k]->saves_own_field())
+          {
+            // The owned entries of the range, gathered in index order.
+            const UnknownRange                            r = ranges[k];
+            std::vector<std::pair<std::uint64_t, double>> local;
+            for (types::global_dof_index i = r.first; i < r.first + r.size; ++i)
+              if (owned.is_element(i))
+                local.emplace_back(i - r.first, state.field[i]);
+            const auto          all = Utilities::MPI::gather(comm, local, 0);
+            std::vector<double> values(r.size, 0.);
+            for (const auto &part : all)
+              for (const auto &[i, v] : part)
+                values[i] = v;
+            checkpoint.put("model/field/" + subsystems[k]->name(), values);
+          }
+        subsystems[k]->save_checkpoint(checkpoint, ghosted);
+      }
+  }
+
+  solvers::BorderedVector
+  Model::load_checkpoint(const Checkpoint &checkpoint, const double t)
+  {
+    std::vector<std::string> names;
+    for (const auto &s : subsystems)
+      names.push_back(s->name());
+    const auto saved =
+      checkpoint.get<std::vector<std::string>>("model/subsystems");
+    const auto dofs = checkpoint.get<std::uint64_t>("model/dofs");
+    const auto list = [](const std::vector<std::string> &v) {
+      std::string s;
+      for (const auto &n : v)
+        s += (s.empty() ? "" : ", ") + n;
+      return s;
+    };
+    check_input(saved == names && dofs == n_dofs(),
+                "--restart " + checkpoint.directory(),
+                "the checkpoint is of another scene (" + std::to_string(dofs)
+                  + " unknowns in " + list(saved) + "; this input has "
+                  + std::to_string(n_dofs()) + " in " + list(names) + ")");
+    // The reference state first (reference volumes, initial contact),
+    // then the checkpoint's state over it.
+    solvers::BorderedVector state = initial_state();
+    const auto border = checkpoint.get<std::vector<double>>("model/border");
+    check_input(border.size() == n_border(),
+                "--restart " + checkpoint.directory(),
+                "the checkpoint has another number of chamber unknowns");
+    for (unsigned int k = 0; k < subsystems.size(); ++k)
+      if (!subsystems[k]->saves_own_field())
+        {
+          const auto values = checkpoint.get<std::vector<double>>(
+            "model/field/" + subsystems[k]->name());
+          const UnknownRange r = ranges[k];
+          for (types::global_dof_index i = r.first; i < r.first + r.size; ++i)
+            if (owned.is_element(i))
+              state.field[i] = values[i - r.first];
+        }
+    for (const auto &s : subsystems)
+      s->load_checkpoint(checkpoint, state.field);
+    state.field.compress(VectorOperation::insert);
+    for (unsigned int j = 0; j < border.size(); ++j)
+      state.border[j] = border[j];
+    const auto counts =
+      checkpoint.get<std::vector<unsigned int>>("model/counts");
+    linear_solves = counts[0];
+    solver.set_counts(counts[1], counts[2]);
+    committed_counts = counts;
+    current_time     = t;
+    // Reports of the restored state (chamber volumes, contact forces).
+    refresh(state);
+    return state;
+  }
+
   std::string
   Model::begin_step(const double t, solvers::BorderedVector &state)
   {
@@ -314,6 +405,9 @@ namespace pneuma
   void
   Model::commit_step(const double t, const solvers::BorderedVector &state)
   {
+    committed_counts = {linear_solves,
+                        solver.n_factorizations(),
+                        solver.n_krylov_iterations()};
     ghost(state.field);
     for (unsigned int k = 0; k < subsystems.size(); ++k)
       {

@@ -142,9 +142,10 @@ namespace pneuma
               "solution_[0-9]{4}(\\.[0-9]+)?\\.(vtu|pvtu)|"
               "cables_[0-9]+_[0-9]{4}\\.vtu|solution\\.pvd|cables\\.pvd|"
               "history\\.csv|summary\\.json|refinement\\.csv");
-            static const std::regex cycles("cycle-[0-9]+");
-            const std::string       name = entry.path().filename().string();
-            const bool              ours =
+            static const std::regex cycles(
+              "cycle-[0-9]+|checkpoint(\\.new|\\.old)?");
+            const std::string name = entry.path().filename().string();
+            const bool        ours =
               (entry.is_regular_file(ec) && std::regex_match(name, files))
               || (entry.is_directory(ec) && std::regex_match(name, cycles));
             if (ours)
@@ -159,6 +160,8 @@ namespace pneuma
                 "Output/Directory",
                 "cannot write into '" + output_directory + "'");
     history_columns = 0;
+    header_written  = false;
+    history_text.clear();
   }
 
   void
@@ -170,17 +173,21 @@ namespace pneuma
     for (const auto &e : row.entries())
       if (e.uses & Statistics::history)
         columns.push_back(&e);
+    std::ostringstream line;
+    if (history_columns == 0 && header_written)
+      history_columns = columns.size(); // a restart: the header is there
     if (history_columns == 0)
       {
         bool first = true;
         for (const auto *e : columns)
           for (unsigned int c = 0; c < e->values.size(); ++c)
             {
-              *history << (first ? "" : ",") << e->header(c);
+              line << (first ? "" : ",") << e->header(c);
               first = false;
             }
-        *history << "\n";
+        line << "\n";
         history_columns = columns.size();
+        header_written  = true;
       }
     AssertThrow(columns.size() == history_columns,
                 ExcMessage("history.csv: the columns changed during the run"));
@@ -188,19 +195,59 @@ namespace pneuma
     for (const auto *e : columns)
       for (const double v : e->values)
         {
-          *history << (first ? "" : ",");
+          line << (first ? "" : ",");
           first = false;
           if (!std::isfinite(v))
             ; // an empty field: never "nan" or "inf" in the file
           else if (e->integer)
-            *history << static_cast<long long>(std::llround(v));
+            line << static_cast<long long>(std::llround(v));
           else
-            *history << std::setprecision(e->name == "wall_seconds" ? 4 : 10)
-                     << v;
+            line << std::setprecision(e->name == "wall_seconds" ? 4 : 10) << v;
         }
-    *history << std::endl;
+    line << "\n";
+    history_text += line.str();
+    *history << line.str() << std::flush;
     if (!*history)
       throw WriteError(output_directory + "/history.csv");
+  }
+
+  void
+  OutputWriter::prepare_restart(const MPI_Comm     comm,
+                                const unsigned int step,
+                                const std::string &history_so_far)
+  {
+    root = Utilities::MPI::this_mpi_process(comm) == 0;
+    check_directory(comm);
+    if (root)
+      {
+        // Files of steps after the checkpoint's (a run that went on past
+        // it) and the earlier summary go; the rest continues.
+        namespace fs = std::filesystem;
+        std::error_code         ec;
+        static const std::regex files(
+          "(solution|cables_[0-9]+)_([0-9]{4})(\\.[0-9]+)?\\.(vtu|pvtu)");
+        for (const auto &entry : fs::directory_iterator(output_directory, ec))
+          {
+            std::smatch       match;
+            const std::string name = entry.path().filename().string();
+            if (entry.is_regular_file(ec)
+                && std::regex_match(name, match, files)
+                && std::stoul(match[2].str()) > step)
+              fs::remove(entry.path(), ec);
+          }
+        fs::remove(output_directory + "/summary.json", ec);
+        history =
+          std::make_unique<std::ofstream>(output_directory + "/history.csv");
+        *history << history_so_far << std::flush;
+      }
+    bool ok = !root || static_cast<bool>(*history);
+    ok      = Utilities::MPI::broadcast(comm, ok, 0);
+    check_input(ok,
+                "Output/Directory",
+                "cannot write into '" + output_directory + "'");
+    history_text    = history_so_far;
+    history_columns = 0;
+    header_written  = !history_so_far.empty();
   }
 
   void

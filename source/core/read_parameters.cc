@@ -67,7 +67,11 @@ namespace pneuma
             {
               for (; depth > 0; --depth)
                 prm.leave_subsection();
-              throw InputError(o.substr(0, eq), short_message(e));
+              std::string what = short_message(e);
+              if (what.find("not yet declared") != std::string::npos)
+                what = "no such entry (pneuma --print-parameters lists "
+                       "them all)";
+              throw InputError(o.substr(0, eq), what);
             }
           for (; depth > 0; --depth)
             prm.leave_subsection();

@@ -1,12 +1,14 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 
+#include <pneuma/core/checkpoint.h>
 #include <pneuma/core/input_error.h>
 #include <pneuma/core/model.h>
 #include <pneuma/core/output.h>
 #include <pneuma/core/simulator.h>
 #include <pneuma/solvers/load_path.h>
 
+#include <csignal>
 #include <fstream>
 #include <iomanip>
 
@@ -47,8 +49,25 @@ namespace pneuma
     Timer                   wall_clock;
     solvers::StaticLoadPath path;
     OutputWriter            output;
+    CheckpointPolicy        checkpoints;
+    /// The checkpoint a restart continues (null: a fresh run).
+    std::unique_ptr<Checkpoint> restart;
+    /// Wall time of the run before its restart.
+    double wall_offset = 0.;
     /// The last converged state of run_once().
     solvers::BorderedVector last_state;
+
+    double
+    wall_time() const
+    {
+      return wall_offset + wall_clock.wall_time();
+    }
+
+    std::string
+    checkpoint_directory() const
+    {
+      return output.directory() + "/checkpoint";
+    }
   };
 
   Simulator::Simulator(const MPI_Comm comm, const InputLayout &layout)
@@ -64,6 +83,7 @@ namespace pneuma
     impl->model.declare_parameters(prm, impl->layout);
     impl->path.declare_parameters(prm);
     impl->output.declare_parameters(prm);
+    impl->checkpoints.declare_parameters(prm);
   }
 
   void
@@ -72,11 +92,33 @@ namespace pneuma
     impl->model.parse_parameters(prm);
     impl->path.parse_parameters(prm);
     impl->output.parse_parameters(prm);
+    impl->checkpoints.parse_parameters(prm);
+    // An adaptive study restarts from its beginning: each cycle is a new
+    // run on a mesh refined from the last one's result.
+    check_input(!impl->checkpoints.enabled()
+                  || impl->model.refinement_cycles() == 0,
+                "Checkpoint",
+                "adaptive refinement studies (Adaptive refinement/Cycles > "
+                "0) cannot be checkpointed; run the cycles again instead");
+    impl->path.stop_after(impl->checkpoints.stop_after());
     if (impl->output.quiet())
       {
         impl->pcout.set_condition(false);
         impl->model.out().set_condition(false);
       }
+  }
+
+  void
+  Simulator::restart_from(const std::string &directory)
+  {
+    Impl &s = *impl;
+    check_input(s.model.refinement_cycles() == 0,
+                "--restart " + directory,
+                "adaptive refinement studies (Adaptive refinement/Cycles > "
+                "0) cannot be restarted; run the cycles again instead");
+    s.restart = std::make_unique<Checkpoint>(directory);
+    s.restart->read_state(s.comm);
+    s.model.set_restart_directory(directory);
   }
 
   void
@@ -164,8 +206,7 @@ namespace pneuma
                   "newton_iterations",
                   step.iterations,
                   Statistics::history);
-    row.add(
-      run, "wall_seconds", "s", wall_clock.wall_time(), Statistics::history);
+    row.add(run, "wall_seconds", "s", wall_time(), Statistics::history);
     model.add_statistics(row, state);
     row.reduce(comm);
     return row;
@@ -176,12 +217,32 @@ namespace pneuma
   {
     RunResult result;
     model.check_well_posed();
+    // A restart continues the checkpoint's state and output files.
+    std::unique_ptr<std::pair<solvers::PathState, solvers::BorderedVector>>
+                 resume;
+    unsigned int last_written = numbers::invalid_unsigned_int;
+    if (restart)
+      {
+        resume = std::make_unique<
+          std::pair<solvers::PathState, solvers::BorderedVector>>();
+        resume->first  = restart->get<solvers::PathState>("path");
+        resume->second = model.load_checkpoint(*restart, resume->first.time);
+        wall_offset    = restart->get<double>("run/wall_seconds");
+        last_written   = restart->get<unsigned int>("output/last_written");
+        output.prepare_restart(comm,
+                               resume->first.steps,
+                               restart->get<std::string>("output/history"));
+        pcout << "pneuma: restarting from " << restart->directory()
+              << " after step " << resume->first.steps
+              << ", t = " << resume->first.time << std::endl;
+      }
+    else
+      output.prepare(comm);
     pcout << "pneuma: " << model.n_dofs() << " dofs in";
     for (const auto &s : model.all())
       pcout << " " << s->name();
     pcout << ", " << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)"
           << std::endl;
-    output.prepare(comm);
 
     // Every write is checked on every rank alike: a rank whose write
     // failed makes all of them stop (WriteError), none is left waiting.
@@ -198,7 +259,6 @@ namespace pneuma
       if (Utilities::MPI::max(static_cast<unsigned int>(failed), comm) > 0)
         throw WriteError(file);
     };
-    unsigned int            last_written = numbers::invalid_unsigned_int;
     solvers::PathStep       last_step;
     solvers::BorderedVector last_seen;
     const auto              write_vtu = [&](const unsigned int             step,
@@ -209,6 +269,19 @@ namespace pneuma
         [&]() { model.write_output(output.directory(), step, t, state); },
         output.directory() + "/solution_" + Utilities::int_to_string(step, 4));
       last_written = step;
+    };
+    // A checkpoint of the converged state (core/checkpoint.h).
+    Timer      since_checkpoint;
+    const auto save_checkpoint = [&](const solvers::BorderedVector &state) {
+      TimerOutput::Scope ts(timer, "checkpoint");
+      write_checkpoint(checkpoint_directory(), comm, [&](Checkpoint &cp) {
+        model.save_checkpoint(cp, state);
+        cp.put("path", path.state());
+        cp.put("output/history", output.history_so_far());
+        cp.put("output/last_written", last_written);
+        cp.put("run/wall_seconds", wall_time());
+      });
+      since_checkpoint.restart();
     };
     const auto observer = [&](const solvers::PathStep       &step,
                               const solvers::BorderedVector &state) {
@@ -222,6 +295,9 @@ namespace pneuma
               || (output.vtu_interval() > 0
                   && step.step % output.vtu_interval() == 0)))
         write_vtu(step.step, step.time, state);
+      if (step.step > 0
+          && checkpoints.due(step.step, since_checkpoint.wall_time() / 60.))
+        save_checkpoint(state);
     };
     // A file that cannot be written stops the run (exit 2) with a message
     // naming it; the run is never reported a success.
@@ -229,7 +305,19 @@ namespace pneuma
     solvers::PathResult path_result;
     try
       {
-        path_result = path.run(model, pcout, wall_clock, observer);
+        path_result =
+          path.run(model, pcout, wall_clock, observer, resume.get());
+        // A run stopped by a signal leaves a checkpoint to continue from
+        // (not an adaptive study: its cycles start again).
+        if ((path_result.exit_code == 128 + SIGINT
+             || path_result.exit_code == 128 + SIGTERM)
+            && model.refinement_cycles() == 0)
+          {
+            save_checkpoint(path_result.state);
+            path_result.message +=
+              " A checkpoint is in " + checkpoint_directory()
+              + "; continue with --restart " + checkpoint_directory();
+          }
         // The last converged state is always written.
         if (output.write_vtu() && last_written != path_result.steps)
           write_vtu(path_result.steps,
@@ -291,7 +379,7 @@ namespace pneuma
     row.add(
       run, "final_time", "", path_result.final_time, counts | Statistics::test);
     model.add_statistics(row, path_result.state);
-    row.add(run, "wall_seconds", "s", wall_clock.wall_time(), counts);
+    row.add(run, "wall_seconds", "s", wall_time(), counts);
     row.reduce(comm);
     try
       {

@@ -1,8 +1,10 @@
+#include <deal.II/distributed/solution_transfer.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/mapping_q_cache.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
+#include <pneuma/core/checkpoint.h>
 #include <pneuma/core/collective_error.h>
 #include <pneuma/core/input_error.h>
 #include <pneuma/core/input_layout.h>
@@ -110,7 +112,13 @@ namespace pneuma
                   ExcMessage("the membrane's dofs must come first"));
       if (!mesh_created)
         {
-          scene.create_triangulation(mesh);
+          // A restart refines the coarse mesh as its checkpoint saved it.
+          scene.create_triangulation(mesh,
+                                     model.restart_directory().empty()
+                                       ? std::string()
+                                       : model.restart_directory()
+                                           + "/membrane.mesh",
+                                     3. * fe_degree * fe_degree);
           fe = std::make_unique<FESystem<2, 3>>(FE_Q<2, 3>(fe_degree), 3);
           cache_mapping();
           mesh_created = true;
@@ -150,6 +158,37 @@ namespace pneuma
       owned_dofs    = dofs.locally_owned_dofs();
       relevant_dofs = DoFTools::extract_locally_relevant_dofs(dofs);
       return dofs.n_dofs();
+    }
+
+    void
+    MembraneSubsystem::save_checkpoint(Checkpoint       &checkpoint,
+                                       const LA::Vector &field) const
+    {
+      // The displacements travel with the mesh (p4est), so a restart may
+      // use another number of ranks.
+      LA::Vector owned(owned_dofs, comm);
+      for (const auto i : owned_dofs)
+        owned[i] = field[i];
+      owned.compress(VectorOperation::insert);
+      LA::Vector ghosted(owned_dofs, relevant_dofs, comm);
+      ghosted = owned;
+      parallel::distributed::SolutionTransfer<2, LA::Vector, 3> transfer(dofs);
+      transfer.prepare_for_serialization(ghosted);
+      mesh.save(checkpoint.directory() + "/membrane.mesh");
+      checkpoint.put("membrane/pvd", pvd_records);
+    }
+
+    void
+    MembraneSubsystem::load_checkpoint(const Checkpoint &checkpoint,
+                                       LA::Vector       &field)
+    {
+      LA::Vector owned(owned_dofs, comm);
+      parallel::distributed::SolutionTransfer<2, LA::Vector, 3> transfer(dofs);
+      transfer.deserialize(owned);
+      for (const auto i : owned_dofs)
+        field[i] = owned[i];
+      pvd_records = checkpoint.get<std::vector<std::pair<double, std::string>>>(
+        "membrane/pvd");
     }
 
     void

@@ -33,21 +33,60 @@ namespace pneuma
     }
 
     PathResult
-    StaticLoadPath::run(Model                    &model,
-                        const ConditionalOStream &out,
-                        dealii::Timer            &wall_clock,
-                        const Observer           &observer)
+    StaticLoadPath::run(Model                                      &model,
+                        const ConditionalOStream                   &out,
+                        dealii::Timer                              &wall_clock,
+                        const Observer                             &observer,
+                        const std::pair<PathState, BorderedVector> *resume)
     {
       PathResult result;
-      result.state = model.initial_state();
-      observer(PathStep{}, result.state);
-
-      double         t  = 0.;
-      double         dt = stepping.initial();
-      BorderedVector last(result.state);
+      double     t  = 0.;
+      double     dt = stepping.initial();
       // Bergan's current stiffness parameter, per stage.
       double       stiffness_reference = 0., stiffness = 1.;
       unsigned int stiffness_stage = numbers::invalid_unsigned_int;
+      if (resume)
+        {
+          const PathState &p           = resume->first;
+          result.state                 = resume->second;
+          t                            = p.time;
+          dt                           = p.increment;
+          result.steps                 = p.steps;
+          result.cutbacks              = p.cutbacks;
+          result.newton_iterations     = p.newton_iterations;
+          result.step_iterations       = p.step_iterations;
+          result.last_residual_history = p.last_residual_history;
+          stiffness_reference          = p.stiffness_reference;
+          stiffness                    = p.stiffness;
+          stiffness_stage              = p.stiffness_stage_set
+                                           ? p.stiffness_stage
+                                           : numbers::invalid_unsigned_int;
+          current                      = p;
+        }
+      else
+        {
+          result.state      = model.initial_state();
+          current           = PathState();
+          current.increment = dt;
+          observer(PathStep{}, result.state);
+        }
+      BorderedVector last(result.state);
+      // The resumable state, after every accepted or cut-back step.
+      const auto snapshot = [&]() {
+        current.time                = t;
+        current.increment           = dt;
+        current.steps               = result.steps;
+        current.cutbacks            = result.cutbacks;
+        current.newton_iterations   = result.newton_iterations;
+        current.stiffness_reference = stiffness_reference;
+        current.stiffness           = stiffness;
+        current.stiffness_stage_set =
+          stiffness_stage != numbers::invalid_unsigned_int;
+        current.stiffness_stage =
+          current.stiffness_stage_set ? stiffness_stage : 0;
+        current.step_iterations       = result.step_iterations;
+        current.last_residual_history = result.last_residual_history;
+      };
 
       while (!stepping.finished(t))
         {
@@ -128,6 +167,7 @@ namespace pneuma
                   result.message   = msg.str();
                   break;
                 }
+              snapshot();
               continue;
             }
 
@@ -152,13 +192,23 @@ namespace pneuma
               << newton.convergence_test << "), wall " << std::fixed
               << std::setprecision(2) << wall_clock.wall_time() << " s"
               << std::defaultfloat << std::setprecision(6) << std::endl;
+          dt = stepping.grown(t_new - t_old, newton.iterations);
+          snapshot();
           observer(PathStep{result.steps,
                             t_new,
                             newton.iterations,
                             newton.convergence_test,
                             stiffness},
                    result.state);
-          dt = stepping.grown(t_new - t_old, newton.iterations);
+          if (stop_step > 0 && result.steps >= stop_step
+              && !stepping.finished(t))
+            {
+              result.message = "stopped after step "
+                               + std::to_string(result.steps)
+                               + " as asked (Checkpoint/Stop after step); "
+                                 "continue with --restart";
+              break;
+            }
         }
       result.final_time = t;
       // The reports of the last converged state.

@@ -199,6 +199,21 @@ namespace pneuma
       commit_end_moment(const Tensor<1, 3>   &moment,
                         const Vector<double> &node_reference,
                         const Vector<double> &node_u);
+
+      /// The state commit_end_moment() tracks, for a checkpoint (none by
+      /// default).
+      virtual std::vector<double>
+      committed_state() const
+      {
+        return {};
+      }
+
+      /// Restore committed_state() at a restart.
+      virtual void
+      restore_state(const std::vector<double> &state)
+      {
+        (void)state;
+      }
     };
 
     /// The registry of cable elements.

@@ -76,6 +76,11 @@ namespace pneuma
       commit_step(const double          t,
                   const LA::Vector     &field,
                   const Vector<double> &border) override;
+      void
+      save_checkpoint(Checkpoint       &checkpoint,
+                      const LA::Vector &field) const override;
+      void
+      load_checkpoint(const Checkpoint &checkpoint, LA::Vector &field) override;
       double
       force_scale(const LA::Vector &field) const override;
       void

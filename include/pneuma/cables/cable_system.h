@@ -42,6 +42,8 @@
 
 namespace pneuma
 {
+  class Checkpoint;
+
   namespace cables
   {
     /// What a cable reports after a converged step.
@@ -164,6 +166,12 @@ namespace pneuma
       /// of a cable loaded by an end moment).
       void
       commit_step(const LA::Vector &u);
+      /// Checkpoint: the committed state of every cable (rank 0's) and
+      /// the .pvd records.
+      void
+      save_checkpoint(Checkpoint &checkpoint) const;
+      void
+      load_checkpoint(const Checkpoint &checkpoint);
 
       /// Reports of every cable at @p u (valid on rank 0).
       std::vector<CableReport>

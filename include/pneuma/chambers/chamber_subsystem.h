@@ -71,6 +71,14 @@ namespace pneuma
       commit_step(const double          t,
                   const LA::Vector     &field,
                   const Vector<double> &border) override;
+      void
+      save_checkpoint(Checkpoint       &checkpoint,
+                      const LA::Vector &field) const override;
+      void
+      load_checkpoint(const Checkpoint &checkpoint, LA::Vector &field) override;
+      /// The reports of a state restored from a checkpoint.
+      void
+      refresh(const LA::Vector &field) override;
       double
       force_scale(const LA::Vector &field) const override;
       void
@@ -98,6 +106,8 @@ namespace pneuma
                 LA::Vector                      &external) const override;
 
     private:
+      /// A checkpoint was loaded: record the reports at the next refresh.
+      bool restored = false;
       /// This subsystem's part of the border vector @p border.
       Vector<double>
       own_part(const Vector<double> &border) const;

@@ -37,6 +37,8 @@
 
 namespace pneuma
 {
+  class Checkpoint;
+
   namespace chambers
   {
     /// What is reported for one chamber (history.csv, summary.json).
@@ -120,6 +122,17 @@ namespace pneuma
                   const double              t,
                   const ConditionalOStream &out);
 
+      /// Checkpoint: the state of every group (pressure, level, sealed
+      /// amount, the last converged gas state).
+      void
+      save_checkpoint(Checkpoint &checkpoint) const;
+      /// Restore it (after initialize()); the reports follow at record().
+      void
+      load_checkpoint(const Checkpoint &checkpoint);
+      /// Reports of the state @p u with the current group state.
+      void
+      record(const LA::Vector &u);
+
       /// The reports of the last commit (or initialize), one per chamber.
       const std::vector<ChamberReport> &
       reports() const
@@ -163,8 +176,6 @@ namespace pneuma
       pressure_controlled(const Group &g) const;
       std::string
       predict_level(Group &g, const LA::Vector &u);
-      void
-      record(const LA::Vector &u);
 
       const ChamberParameters  &parameters;
       const ChamberAssembler   &assembler;

@@ -60,6 +60,11 @@ namespace pneuma
                   const LA::Vector     &field,
                   const Vector<double> &border) override;
       void
+      save_checkpoint(Checkpoint       &checkpoint,
+                      const LA::Vector &field) const override;
+      void
+      load_checkpoint(const Checkpoint &checkpoint, LA::Vector &field) override;
+      void
       refresh(const LA::Vector &field) override;
       void
       add_statistics(Statistics       &statistics,

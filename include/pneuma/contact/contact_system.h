@@ -37,6 +37,8 @@
 
 namespace pneuma
 {
+  class Checkpoint;
+
   namespace contact
   {
     /// What a contact pair reports after an assembly.
@@ -104,6 +106,13 @@ namespace pneuma
       /// one): stick anchors stay, slipping ones move.
       void
       commit_step();
+
+      /// Checkpoint: the stick anchors of every pair (gathered; by cell
+      /// id, so a restart may use another number of ranks).
+      void
+      save_checkpoint(Checkpoint &checkpoint) const;
+      void
+      load_checkpoint(const Checkpoint &checkpoint);
 
       /// Reports of the last assembly, one per pair (same on every rank).
       const std::vector<ContactReport> &

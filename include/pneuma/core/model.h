@@ -32,6 +32,7 @@
 
 namespace pneuma
 {
+  class Checkpoint;
   class InputLayout;
 
   /// Result of a finite-difference check of the tangent.
@@ -173,6 +174,29 @@ namespace pneuma
     /// subsystem initialized.
     solvers::BorderedVector
     initial_state();
+    /// Checkpoint: every subsystem's state at the converged @p state, the
+    /// field values of those that do not save their own, the border and
+    /// the solver counts.
+    void
+    save_checkpoint(Checkpoint                    &checkpoint,
+                    const solvers::BorderedVector &state);
+    /// Restart: the reference state (initial_state()), then the state of
+    /// @p checkpoint at pseudo time @p t; throws InputError if the
+    /// checkpoint belongs to another scene.
+    solvers::BorderedVector
+    load_checkpoint(const Checkpoint &checkpoint, const double t);
+    /// Set up from the checkpoint in @p directory (its mesh) instead of
+    /// the input's mesh; empty: a fresh run.
+    void
+    set_restart_directory(const std::string &directory)
+    {
+      restart = directory;
+    }
+    const std::string &
+    restart_directory() const
+    {
+      return restart;
+    }
     /**
      * Prepare the step to @p t from the converged @p state: prescribed
      * values, dependent dofs, contact candidates (matrices rebuilt if they
@@ -282,5 +306,8 @@ namespace pneuma
     LA::Vector                        external, ghosted;
     solvers::BorderCoupling           coupling;
     unsigned int                      linear_solves = 0;
+    std::string                       restart;
+    /// Solver counts at the last commit_step() (for checkpoints).
+    std::vector<unsigned int> committed_counts = {0, 0, 0};
   };
 } // namespace pneuma

@@ -50,10 +50,26 @@ namespace pneuma
 
     /// Check the directory, remove the files of an earlier run there
     /// (solution_*, cables_*, the .pvd records, history.csv, summary.json,
+    /// checkpoint/,
     /// refinement.csv, cycle-*/) and start history.csv.
     void
     prepare(const MPI_Comm comm);
 
+    /**
+     * Continue the run of a checkpoint at @p step: history.csv is
+     * @p history_so_far (its rows up to that step), the VTU files of later
+     * steps and summary.json of the earlier run go.
+     */
+    void
+    prepare_restart(const MPI_Comm     comm,
+                    const unsigned int step,
+                    const std::string &history_so_far);
+    /// Everything history.csv holds so far (rank 0), for a checkpoint.
+    const std::string &
+    history_so_far() const
+    {
+      return history_text;
+    }
     /// Append a row to history.csv (the first row writes the header).
     void
     history_row(const Statistics &row);
@@ -105,5 +121,7 @@ namespace pneuma
     bool                           root             = true;
     std::unique_ptr<std::ofstream> history;
     unsigned int                   history_columns = 0;
+    std::string                    history_text;
+    bool                           header_written = false;
   };
 } // namespace pneuma

@@ -71,6 +71,14 @@ namespace pneuma
     void
     parse_parameters(dealii::ParameterHandler &prm);
 
+    /**
+     * Continue the run saved in the checkpoint directory @p directory
+     * (called after parse_parameters(), before setup()); throws InputError
+     * naming it if it cannot be read or belongs to another scene.
+     */
+    void
+    restart_from(const std::string &directory);
+
     /// Build the meshes, check them against the input, set up the system.
     void
     setup();

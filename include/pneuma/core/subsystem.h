@@ -41,6 +41,7 @@
 
 namespace pneuma
 {
+  class Checkpoint;
   class InputLayout;
   class Model;
 
@@ -305,6 +306,37 @@ namespace pneuma
       return 0.;
     }
 
+    // ---- checkpoint and restart (core/checkpoint.h)
+    /**
+     * Does this subsystem save and restore its own field values (the
+     * membrane, through p4est with its mesh)? Otherwise the model stores
+     * the values of its range, gathered on rank 0.
+     */
+    virtual bool
+    saves_own_field() const
+    {
+      return false;
+    }
+    /// Store what a restart needs besides the field and the border (all
+    /// ranks call it; sections put on rank 0 are the ones written) at the
+    /// converged @p field (ghosted).
+    virtual void
+    save_checkpoint(Checkpoint &checkpoint, const LA::Vector &field) const
+    {
+      (void)checkpoint;
+      (void)field;
+    }
+    /**
+     * Restore that state (the model is set up and initialized at t = 0);
+     * a subsystem that saves its own field writes its owned entries of
+     * @p field here.
+     */
+    virtual void
+    load_checkpoint(const Checkpoint &checkpoint, LA::Vector &field)
+    {
+      (void)checkpoint;
+      (void)field;
+    }
     // ---- reporting
     /// Add named values with units at the converged state @p field.
     virtual void

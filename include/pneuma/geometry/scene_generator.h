@@ -45,10 +45,28 @@ namespace pneuma
       void
       parse_parameters(ParameterHandler &prm);
 
-      /// Build the coarse mesh, attach manifolds and refine globally.
+      /**
+       * Build the coarse mesh, attach manifolds and refine globally; or,
+       * if @p saved names the mesh of a checkpoint, refine as saved there
+       * (p4est, any number of ranks). Throws InputError naming @p saved if
+       * it cannot be read.
+       *
+       * Before any refinement, the size guard: the refined mesh's cells
+       * times @p unknowns_per_cell estimate the unknowns, and a run whose
+       * estimated memory exceeds Geometry/Memory limit (default: this
+       * machine's memory) stops with a message saying how much it would
+       * need. A coarse mesh whose extent is not a length in metres
+       * (1e-6 m to 1e6 m) is bad input too.
+       */
       void
-      create_triangulation(
-        parallel::distributed::Triangulation<2, 3> &tria) const;
+      create_triangulation(parallel::distributed::Triangulation<2, 3> &tria,
+                           const std::string &saved             = "",
+                           const double       unknowns_per_cell = 3.) const;
+
+      /// Estimated memory [bytes] of a run with @p unknowns (the factorized
+      /// tangent dominates; measured on the airbeam, benchmarks/).
+      static double
+      estimated_memory(const double unknowns, const double unknowns_per_cell);
       /**
        * Orientation of a cell: +1 if the deal.II normal at the cell centre
        * @p x (reference configuration) points outward, -1 otherwise.
@@ -72,8 +90,10 @@ namespace pneuma
       }
 
     private:
-      std::string                                             geometry_type;
-      unsigned int                                            refinements = 3;
+      std::string  geometry_type;
+      unsigned int refinements = 3;
+      /// Size guard [GB]: 0 this machine's memory, < 0 no guard.
+      double                                                  memory_limit = 0.;
       std::map<std::string, std::unique_ptr<SurfaceGeometry>> variants;
       std::unique_ptr<SurfaceGeometry>                        surface;
     };

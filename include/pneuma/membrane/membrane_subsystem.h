@@ -216,6 +216,16 @@ namespace pneuma
       /// (a warning when other subsystems may hold the membrane).
       void
       check_well_posed() const override;
+      bool
+      saves_own_field() const override
+      {
+        return true;
+      }
+      void
+      save_checkpoint(Checkpoint       &checkpoint,
+                      const LA::Vector &field) const override;
+      void
+      load_checkpoint(const Checkpoint &checkpoint, LA::Vector &field) override;
       void
       compute_reactions(const LA::Vector      &u,
                         std::array<double, 3> &reaction,

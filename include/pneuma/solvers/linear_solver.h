@@ -115,6 +115,15 @@ namespace pneuma
         return krylov_iterations;
       }
 
+      /// Continue the counts of a run restarted from a checkpoint.
+      void
+      set_counts(const unsigned int n_factorizations,
+                 const unsigned int n_krylov_iterations)
+      {
+        factorizations    = n_factorizations;
+        krylov_iterations = n_krylov_iterations;
+      }
+
     private:
       /// Entry "Type": "direct" or "amg".
       std::string solver_type = "direct";

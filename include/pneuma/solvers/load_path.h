@@ -46,6 +46,28 @@ namespace pneuma
       double stiffness_parameter = 1.;
     };
 
+    /// Where the path stands after a converged step: what a restart needs
+    /// to continue as if it had not stopped (core/checkpoint.h).
+    struct PathState
+    {
+      double                    time = 0., increment = 0.;
+      unsigned int              steps = 0, cutbacks = 0, newton_iterations = 0;
+      double                    stiffness_reference = 0., stiffness = 1.;
+      unsigned int              stiffness_stage     = 0;
+      bool                      stiffness_stage_set = false;
+      std::vector<unsigned int> step_iterations;
+      std::vector<double>       last_residual_history;
+
+      template <class Archive>
+      void
+      serialize(Archive &ar, const unsigned int)
+      {
+        ar &time &increment &steps &cutbacks     &newton_iterations;
+        ar &stiffness_reference &stiffness       &stiffness_stage;
+        ar &stiffness_stage_set &step_iterations &last_residual_history;
+      }
+    };
+
     /// How the path ended.
     struct PathResult
     {
@@ -74,12 +96,32 @@ namespace pneuma
       void
       parse_parameters(ParameterHandler &prm);
 
-      /// Run the path on @p model (set up) from its reference state.
+      /**
+       * Run the path on @p model (set up) from its reference state, or,
+       * with @p resume, from a state restored from a checkpoint (then the
+       * observer first sees the next step).
+       */
       PathResult
-      run(Model                    &model,
-          const ConditionalOStream &out,
-          dealii::Timer            &wall_clock,
-          const Observer           &observer);
+      run(Model                                      &model,
+          const ConditionalOStream                   &out,
+          dealii::Timer                              &wall_clock,
+          const Observer                             &observer,
+          const std::pair<PathState, BorderedVector> *resume = nullptr);
+
+      /// The path's state at the last converged step (valid inside the
+      /// observer and after run()).
+      const PathState &
+      state() const
+      {
+        return current;
+      }
+
+      /// Stop after converged step @p step (0: never), with exit code 0.
+      void
+      stop_after(const unsigned int step)
+      {
+        stop_step = step;
+      }
 
       const NewtonSolver &
       newton() const
@@ -90,6 +132,8 @@ namespace pneuma
     private:
       LoadStepping stepping;
       NewtonSolver newton_solver;
+      PathState    current;
+      unsigned int stop_step = 0;
     };
   } // namespace solvers
 } // namespace pneuma

@@ -207,6 +207,31 @@ namespace pneuma
           return SolidBeamElement::section_rotation(moment, A, theta);
         }
 
+        std::vector<double>
+        committed_state() const override
+        {
+          std::vector<double> s;
+          for (unsigned int k = 0; k < 2; ++k)
+            {
+              for (unsigned int c = 0; c < 3; ++c)
+                s.push_back(moment_axes[k][c]);
+              s.push_back(moment_angles[k]);
+            }
+          return s;
+        }
+
+        void
+        restore_state(const std::vector<double> &s) override
+        {
+          AssertThrow(s.size() == 8, ExcInternalError());
+          for (unsigned int k = 0; k < 2; ++k)
+            {
+              for (unsigned int c = 0; c < 3; ++c)
+                moment_axes[k][c] = s[4 * k + c];
+              moment_angles[k] = s[4 * k + 3];
+            }
+        }
+
       private:
         /// Reference (A) and current (a) semi-axis vectors of a node.
         static void
