@@ -190,6 +190,8 @@ check "$c"                          1 "Chambers/Ambient pressure: The string <in
 check "$k"                          1 "Cables/Cable 1/Distributed load/Function expression: is not finite at t = 0" --set "Cables/Cable 1/Distributed load/Function expression=0; 0; 1/t"
 check "$k"                          1 "Cables/Cable 1/End force/Function expression: '0; 0; log(t)' is not finite at t = 0" --set "Cables/Cable 1/End force/Function expression=0; 0; log(t)"
 check "$k"                          1 "Cables/Cable 1/Start displacement/Function expression: '0; 0; 1/t' is not finite" --set "Cables/Cable 1/Start displacement/Function expression=0; 0; 1/t"
+# A load that becomes infinite later: exit 2 with the last finite state.
+check "$dir/valid.prm"              2 "could not be completed at t = 0.375 even with the minimum increment 0.1 (residual is not finite). The last converged state (t = 0.375) is written." --set "Output/Directory=late" --set "Output/Write VTU=true" --set "Loads/Pressure/Function expression=100*t+1/(0.5-t)" --set "Load stepping/Growth factor=1" --set "Load stepping/Cut-back factor=0.5" --set "Load stepping/Minimum increment=0.1"
 # Sizes: lengths in metres, the size guard.
 check "$dir/valid.prm"              1 "Geometry/disc: the membrane spans inf m; lengths are in metres" --set "Geometry/disc/Radius=1e300"
 check "$dir/valid.prm"              1 "Geometry/disc: the membrane spans 2.83e-09 m" --set "Geometry/disc/Radius=1e-9"
