@@ -56,6 +56,21 @@ for case in \
   same_series "$full" "$part" || fail=1
 done
 
+# Periodic checkpoints (by steps, by minutes): the last one of a complete
+# run is at its final step; a restart from it has nothing left to do and
+# reports the same final state (the chamber reports of a restored state).
+prm="$src/tests/chambers_liquid_gas_mpi.prm"
+for every in "Interval steps=4" "Interval minutes=1e-9"; do
+  dir="periodic-${every%%=*}"; dir="${dir// /_}"
+  rm -rf "$dir" "$dir-again"
+  run 1 "$prm" "$dir" --set "Checkpoint/$every" || { echo "FAIL $dir: exit $?"; fail=1; continue; }
+  run 1 "$prm" "$dir-again" --restart "$dir/checkpoint"
+  code=$?
+  echo -n "liquid_gas, Checkpoint/$every, restart at the end: exit $code, "
+  $compare liquid_gas-1-full/summary.json "$dir-again/summary.json" || fail=1
+  [ $code -eq 0 ] || fail=1
+done
+
 # A run stopped by SIGTERM leaves a checkpoint; the restart completes it.
 prm="$src/parameter_files/airbeam.prm"
 args=(--set "Geometry/Global refinements=3" --set "Load stepping/Initial increment=0.02"
