@@ -5,7 +5,7 @@
 # reference BLAS Debian selects otherwise).
 # Does nothing when everything is already there.
 set -euo pipefail
-packages=(build-essential cmake ccache libdeal.ii-dev numdiff
+packages=(build-essential cmake ccache libdeal.ii-dev libmumps-dev numdiff
           libopenblas0-pthread
           gmsh openmpi-bin time python3 python3-matplotlib python3-vtk9
           clang-format)

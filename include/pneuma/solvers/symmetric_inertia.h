@@ -1,0 +1,64 @@
+#pragma once
+
+/**
+ * @file
+ * The inertia of a symmetric sparse matrix (the numbers of negative, zero
+ * and positive eigenvalues) from MUMPS' LDL^T factorization, the
+ * stability test of a converged state (Sylvester's law of inertia: the
+ * inertia of A equals that of D in A = L D L^T).
+ *
+ * Trilinos' Amesos_Mumps always factorizes with SYM = 0 (LU, whose pivot
+ * signs say nothing about eigenvalues), so this class calls MUMPS' C
+ * interface itself (MUMPS 5.5 user guide, Sec. 5.2 and INFOG(12), (28)):
+ * - SYM = 2 (general symmetric, 1x1 and 2x2 pivots; the count of negative
+ *   eigenvalues of a 2x2 pivot block is exact: one if its determinant is
+ *   negative, else two if its diagonal is),
+ * - only the upper triangle, distributed by rows (ICNTL(18) = 3),
+ * - ICNTL(13) = 1: no ScaLAPACK root, whose pivots INFOG(12) would not
+ *   count in parallel,
+ * - ICNTL(24) = 1: null pivot detection; INFOG(28) counts pivots below the
+ *   threshold CNTL(3) (relative to the matrix norm), which are then
+ *   neither negative nor positive.
+ * The analysis is redone only when the sparsity pattern changes.
+ */
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/types.h>
+
+#include <pneuma/core/linear_algebra.h>
+
+#include <memory>
+
+namespace pneuma
+{
+  namespace solvers
+  {
+    /// Eigenvalue sign counts of a symmetric matrix.
+    struct Inertia
+    {
+      dealii::types::global_dof_index negative = 0, zero = 0, positive = 0;
+    };
+
+    /// Inertia by MUMPS' symmetric indefinite factorization.
+    class SymmetricInertia
+    {
+    public:
+      /**
+       * @p zero_pivot_threshold: a pivot below this times the matrix norm
+       * counts as a zero eigenvalue (CNTL(3)).
+       */
+      explicit SymmetricInertia(const MPI_Comm comm,
+                                const double   zero_pivot_threshold = 1e-12);
+      ~SymmetricInertia();
+
+      /// The inertia of @p A (symmetric; only its upper triangle is read).
+      /// Throws std::runtime_error with MUMPS' error code if it fails.
+      Inertia
+      compute(const LA::SparseMatrix &A);
+
+    private:
+      struct Data;
+      std::unique_ptr<Data> data;
+    };
+  } // namespace solvers
+} // namespace pneuma

@@ -1,0 +1,118 @@
+#include <pneuma/solvers/symmetric_inertia.h>
+
+#include <Epetra_CrsMatrix.h>
+#include <dmumps_c.h>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace pneuma
+{
+  namespace solvers
+  {
+    struct SymmetricInertia::Data
+    {
+      DMUMPS_STRUC_C id;
+      bool           initialized = false, analysed = false;
+      // The triplets of the last analysis (1-based; MUMPS keeps pointers).
+      std::vector<MUMPS_INT> rows, columns;
+      std::vector<double>    values;
+      MUMPS_INT8             n = 0;
+
+      void
+      call(const int job)
+      {
+        id.job = job;
+        dmumps_c(&id);
+        if (id.infog[0] < 0)
+          throw std::runtime_error(
+            "MUMPS (symmetric inertia) failed in job " + std::to_string(job)
+            + " with INFOG(1) = " + std::to_string(id.infog[0])
+            + ", INFOG(2) = " + std::to_string(id.infog[1]));
+      }
+    };
+
+    SymmetricInertia::SymmetricInertia(const MPI_Comm comm,
+                                       const double   zero_pivot_threshold)
+      : data(std::make_unique<Data>())
+    {
+      DMUMPS_STRUC_C &id = data->id;
+      id                 = DMUMPS_STRUC_C();
+      id.comm_fortran    = static_cast<MUMPS_INT>(MPI_Comm_c2f(comm));
+      id.par             = 1; // the host works too
+      id.sym             = 2; // general symmetric: LDL^T with 2x2 pivots
+      data->call(-1);
+      data->initialized = true;
+      id.icntl[0]       = -1; // no error, diagnostic or global output
+      id.icntl[1]       = -1;
+      id.icntl[2]       = -1;
+      id.icntl[3]       = 0;
+      id.icntl[12]      = 1; // ICNTL(13): no ScaLAPACK root (exact count)
+      id.icntl[17]      = 3; // ICNTL(18): distributed triplets
+      id.icntl[23]      = 1; // ICNTL(24): detect null pivots
+      id.cntl[2]        = zero_pivot_threshold; // CNTL(3)
+    }
+
+    SymmetricInertia::~SymmetricInertia()
+    {
+      if (data && data->initialized)
+        {
+          data->id.job = -2;
+          dmumps_c(&data->id);
+        }
+    }
+
+    Inertia
+    SymmetricInertia::compute(const LA::SparseMatrix &A)
+    {
+      // The owned rows' upper triangle, in global 1-based indices.
+      const Epetra_CrsMatrix &M = A.trilinos_matrix();
+      std::vector<MUMPS_INT>  rows, columns;
+      std::vector<double>     values;
+      for (int r = 0; r < M.NumMyRows(); ++r)
+        {
+          int     n       = 0;
+          double *entries = nullptr;
+          int    *local   = nullptr;
+          M.ExtractMyRowView(r, n, entries, local);
+          const long long row = M.GRID64(r);
+          for (int k = 0; k < n; ++k)
+            {
+              const long long column = M.GCID64(local[k]);
+              if (column >= row)
+                {
+                  rows.push_back(static_cast<MUMPS_INT>(row + 1));
+                  columns.push_back(static_cast<MUMPS_INT>(column + 1));
+                  values.push_back(entries[k]);
+                }
+            }
+        }
+      Data           &d            = *data;
+      DMUMPS_STRUC_C &id           = d.id;
+      const bool      same_pattern = d.analysed
+                                && d.n == static_cast<MUMPS_INT8>(A.m())
+                                && rows == d.rows && columns == d.columns;
+      d.values = values;
+      id.a_loc = d.values.data();
+      if (!same_pattern)
+        {
+          d.rows     = rows;
+          d.columns  = columns;
+          d.n        = A.m();
+          id.n       = static_cast<MUMPS_INT>(A.m());
+          id.nnz_loc = static_cast<MUMPS_INT8>(d.rows.size());
+          id.irn_loc = d.rows.data();
+          id.jcn_loc = d.columns.data();
+          d.call(1); // analysis
+          d.analysed = true;
+        }
+      d.call(2); // factorization
+      Inertia result;
+      result.negative = id.infog[11]; // INFOG(12)
+      result.zero     = id.infog[27]; // INFOG(28)
+      result.positive = A.m() - result.negative - result.zero;
+      return result;
+    }
+  } // namespace solvers
+} // namespace pneuma

@@ -1,0 +1,148 @@
+// The inertia of symmetric matrices by MUMPS' LDL^T (solvers/symmetric_
+// inertia.h), distributed by rows over the MPI ranks, against exact counts:
+// - the 1D Laplacian (n = 200) shifted by sigma: eigenvalues
+//   2 - 2 cos(j pi/(n+1)) - sigma, j = 1..n, so the number below zero is
+//   known in closed form; three shifts, and the analysis is reused;
+// - a saddle-point matrix [I B; B^T 0] (B: m columns of n rows, full
+//   rank): n positive and m negative eigenvalues, and zero diagonal
+//   entries that need 2x2 pivots;
+// - a singular matrix (a Laplacian with free ends has one zero
+//   eigenvalue): the zero pivot is counted, not called negative.
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <pneuma/solvers/symmetric_inertia.h>
+
+#include "test_tools.h"
+
+#include <cmath>
+#include <functional>
+
+namespace
+{
+  using dealii::types::global_dof_index;
+
+  /// A symmetric matrix of size n from its entries (row, column, value)
+  /// for the owned rows; rows distributed in contiguous blocks.
+  pneuma::LA::SparseMatrix
+  make_matrix(
+    const global_dof_index n,
+    const std::function<
+      std::vector<std::pair<global_dof_index, double>>(global_dof_index)> &row)
+  {
+    const MPI_Comm     comm = MPI_COMM_WORLD;
+    const unsigned int p    = dealii::Utilities::MPI::n_mpi_processes(comm);
+    const unsigned int r    = dealii::Utilities::MPI::this_mpi_process(comm);
+    dealii::IndexSet   owned(n);
+    owned.add_range(n * r / p, n * (r + 1) / p);
+    dealii::DynamicSparsityPattern dsp(n, n, owned);
+    for (const auto i : owned)
+      for (const auto &[j, v] : row(i))
+        dsp.add(i, j);
+    pneuma::LA::SparseMatrix A;
+    A.reinit(owned, owned, dsp, comm);
+    for (const auto i : owned)
+      for (const auto &[j, v] : row(i))
+        A.set(i, j, v);
+    A.compress(dealii::VectorOperation::insert);
+    return A;
+  }
+
+  bool
+  check_count(const std::string     &name,
+              const global_dof_index value,
+              const global_dof_index reference)
+  {
+    const bool ok = value == reference;
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::printf("%s: reference %llu value %llu error %lld %s\n",
+                  name.c_str(),
+                  static_cast<unsigned long long>(reference),
+                  static_cast<unsigned long long>(value),
+                  static_cast<long long>(value)
+                    - static_cast<long long>(reference),
+                  ok ? "PASS" : "FAIL");
+    return ok;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  bool                                     ok = true;
+  const global_dof_index                   n  = 200;
+
+  // Shifted Laplacians, one analysis for all shifts.
+  pneuma::solvers::SymmetricInertia inertia(MPI_COMM_WORLD);
+  for (const double sigma : {0.5, 1.7, 3.9})
+    {
+      const auto       A        = make_matrix(n, [&](const global_dof_index i) {
+        std::vector<std::pair<global_dof_index, double>> e;
+        if (i > 0)
+          e.emplace_back(i - 1, -1.);
+        e.emplace_back(i, 2. - sigma);
+        if (i + 1 < n)
+          e.emplace_back(i + 1, -1.);
+        return e;
+      });
+      global_dof_index negative = 0;
+      for (global_dof_index j = 1; j <= n; ++j)
+        if (2. - 2. * std::cos(j * M_PI / (n + 1)) < sigma)
+          ++negative;
+      const auto result = inertia.compute(A);
+      ok &= check_count("Laplacian - " + std::to_string(sigma).substr(0, 3)
+                          + " I: negative eigenvalues",
+                        result.negative,
+                        negative);
+      ok &= check_count("  positive", result.positive, n - negative);
+    }
+
+  // Saddle point [I B; B^T 0]: B couples column k to rows 2k and 2k+1.
+  const global_dof_index m = 60, size = n + m;
+  const auto             S = make_matrix(size, [&](const global_dof_index i) {
+    std::vector<std::pair<global_dof_index, double>> e;
+    if (i < n)
+      {
+        e.emplace_back(i, 1.);
+        if (i / 2 < m)
+          e.emplace_back(n + i / 2, i % 2 ? 1. : 0.5);
+      }
+    else
+      {
+        e.emplace_back(i, 0.);
+        e.emplace_back(2 * (i - n), 0.5);
+        e.emplace_back(2 * (i - n) + 1, 1.);
+      }
+    return e;
+  });
+  pneuma::solvers::SymmetricInertia saddle(MPI_COMM_WORLD);
+  const auto                        s = saddle.compute(S);
+  ok &= check_count("saddle point: negative eigenvalues", s.negative, m);
+  ok &= check_count("  positive", s.positive, n);
+  ok &= check_count("  zero", s.zero, 0);
+
+  // A Laplacian with free ends: one zero eigenvalue (constants).
+  const auto L = make_matrix(n, [&](const global_dof_index i) {
+    std::vector<std::pair<global_dof_index, double>> e;
+    double                                           d = 0.;
+    if (i > 0)
+      {
+        e.emplace_back(i - 1, -1.);
+        d += 1.;
+      }
+    if (i + 1 < n)
+      {
+        e.emplace_back(i + 1, -1.);
+        d += 1.;
+      }
+    e.emplace_back(i, d);
+    return e;
+  });
+  pneuma::solvers::SymmetricInertia singular(MPI_COMM_WORLD, 1e-8);
+  const auto                        z = singular.compute(L);
+  ok &= check_count("free Laplacian: zero eigenvalues", z.zero, 1);
+  ok &= check_count("  negative", z.negative, 0);
+  return ok ? 0 : 1;
+}
