@@ -7,10 +7,13 @@
 #include <pneuma/core/output.h>
 #include <pneuma/core/simulator.h>
 #include <pneuma/solvers/load_path.h>
+#include <pneuma/solvers/stability.h>
 
 #include <csignal>
 #include <fstream>
 #include <iomanip>
+#include <limits>
+#include <sstream>
 
 namespace pneuma
 {
@@ -50,6 +53,12 @@ namespace pneuma
     solvers::StaticLoadPath path;
     OutputWriter            output;
     CheckpointPolicy        checkpoints;
+    /// The inertia of every converged state (solvers/stability.h).
+    bool                                     check_stability = true;
+    std::unique_ptr<solvers::StabilityCheck> stability;
+    solvers::StabilityReport                 last_stability;
+    unsigned int                             unstable_steps = 0;
+    double first_unstable = std::numeric_limits<double>::quiet_NaN();
     /// The checkpoint a restart continues (null: a fresh run).
     std::unique_ptr<Checkpoint> restart;
     /// Wall time of the run before its restart.
@@ -84,6 +93,15 @@ namespace pneuma
     impl->path.declare_parameters(prm);
     impl->output.declare_parameters(prm);
     impl->checkpoints.declare_parameters(prm);
+    prm.enter_subsection("Stability");
+    prm.add_parameter(
+      "Check inertia",
+      impl->check_stability,
+      "Count the negative eigenvalues of the tangent at every converged "
+      "step, chamber terms included (MUMPS LDL^T of the field block and "
+      "the chamber Schur complement: one extra assembly and symmetric "
+      "factorization per step). An unstable state gets a warning.");
+    prm.leave_subsection();
   }
 
   void
@@ -208,6 +226,45 @@ namespace pneuma
                   Statistics::history);
     row.add(run, "wall_seconds", "s", wall_time(), Statistics::history);
     model.add_statistics(row, state);
+    if (check_stability)
+      {
+        // The converged states after the reference state (whose tangent
+        // is singular for a stress-free membrane).
+        const double             nan = std::numeric_limits<double>::quiet_NaN();
+        solvers::StabilityReport r;
+        if (step.step > 0)
+          {
+            if (!stability)
+              stability = std::make_unique<solvers::StabilityCheck>(comm);
+            r              = stability->check(model, state);
+            last_stability = r;
+            pcout << "  stability: " << r.negative
+                  << " negative eigenvalue(s); under prescribed pressures "
+                  << r.negative_field
+                  << (r.note.empty() ? "" : " (" + r.note + ")") << std::endl;
+            if (r.negative > 0)
+              {
+                if (unstable_steps == 0)
+                  first_unstable = step.time;
+                ++unstable_steps;
+                pcout << "pneuma: warning: the converged state at t = "
+                      << step.time << " is unstable (" << r.negative
+                      << " negative eigenvalue(s) of the tangent)" << std::endl;
+              }
+          }
+        row.add_count(run,
+                      "negative_eigenvalues",
+                      r.computed ? r.negative : nan,
+                      Statistics::history);
+        row.add_count(run,
+                      "negative_eigenvalues_prescribed_pressure",
+                      r.computed ? r.negative_field : nan,
+                      Statistics::history);
+        row.add_count(run,
+                      "zero_pivots",
+                      r.computed ? r.zero : nan,
+                      Statistics::history);
+      }
     row.reduce(comm);
     return row;
   }
@@ -228,7 +285,12 @@ namespace pneuma
         resume->first  = restart->get<solvers::PathState>("path");
         resume->second = model.load_checkpoint(*restart, resume->first.time);
         wall_offset    = restart->get<double>("run/wall_seconds");
-        last_written   = restart->get<unsigned int>("output/last_written");
+        const auto s   = restart->get<std::vector<double>>("run/stability");
+        unstable_steps = static_cast<unsigned int>(s[0]);
+        first_unstable = s[1];
+        last_stability.computed = s[2] != 0.;
+        last_stability.negative = static_cast<long long>(s[3]);
+        last_written = restart->get<unsigned int>("output/last_written");
         output.prepare_restart(comm,
                                resume->first.steps,
                                restart->get<std::string>("output/history"));
@@ -280,6 +342,12 @@ namespace pneuma
         cp.put("output/history", output.history_so_far());
         cp.put("output/last_written", last_written);
         cp.put("run/wall_seconds", wall_time());
+        cp.put("run/stability",
+               std::vector<double>{static_cast<double>(unstable_steps),
+                                   first_unstable,
+                                   last_stability.computed ? 1. : 0.,
+                                   static_cast<double>(
+                                     last_stability.negative)});
       });
       since_checkpoint.restart();
     };
@@ -379,6 +447,28 @@ namespace pneuma
     row.add(
       run, "final_time", "", path_result.final_time, counts | Statistics::test);
     model.add_statistics(row, path_result.state);
+    if (check_stability)
+      {
+        row.add_count(run, "unstable_steps", unstable_steps, counts);
+        row.add(run, "first_unstable_time", "", first_unstable, counts);
+        row.add_count(run,
+                      "negative_eigenvalues",
+                      last_stability.computed ? last_stability.negative
+                                              : std::nan(""),
+                      counts);
+        if (unstable_steps > 0 && result.exit_code == success)
+          {
+            std::ostringstream m;
+            m << "warning: " << unstable_steps
+              << " converged state(s) are unstable, the first at t = "
+              << first_unstable
+              << " (negative eigenvalues of the tangent; history.csv "
+                 "column negative_eigenvalues)";
+            result.message = result.message.empty()
+                               ? m.str()
+                               : result.message + "; " + m.str();
+          }
+      }
     row.add(run, "wall_seconds", "s", wall_time(), counts);
     row.reduce(comm);
     try

@@ -114,5 +114,26 @@ namespace pneuma
       result.positive = A.m() - result.negative - result.zero;
       return result;
     }
+    void
+    SymmetricInertia::solve(const dealii::Vector<double> &b,
+                            dealii::Vector<double>       &x)
+    {
+      Data           &d  = *data;
+      DMUMPS_STRUC_C &id = d.id;
+      const bool      host =
+        dealii::Utilities::MPI::this_mpi_process(MPI_Comm_f2c(id.comm_fortran))
+        == 0;
+      // Centralized right-hand side and solution on the host (ICNTL(20) =
+      // ICNTL(21) = 0), then shared.
+      x            = b;
+      id.icntl[19] = 0;
+      id.icntl[20] = 0;
+      id.nrhs      = 1;
+      id.lrhs      = static_cast<MUMPS_INT>(x.size());
+      id.rhs       = host ? x.data() : nullptr;
+      d.call(3);
+      x =
+        dealii::Utilities::MPI::broadcast(MPI_Comm_f2c(id.comm_fortran), x, 0);
+    }
   } // namespace solvers
 } // namespace pneuma

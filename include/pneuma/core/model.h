@@ -149,6 +149,17 @@ namespace pneuma
     {
       timers = &t;
     }
+    /// The tangent and the border blocks of the last assemble().
+    const LA::SparseMatrix &
+    tangent_matrix() const
+    {
+      return tangent;
+    }
+    const solvers::BorderCoupling &
+    border_coupling() const
+    {
+      return coupling;
+    }
     unsigned int
     n_linear_solves() const
     {

@@ -25,6 +25,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/types.h>
 
+#include <deal.II/lac/vector.h>
+
 #include <pneuma/core/linear_algebra.h>
 
 #include <memory>
@@ -55,6 +57,11 @@ namespace pneuma
       /// Throws std::runtime_error with MUMPS' error code if it fails.
       Inertia
       compute(const LA::SparseMatrix &A);
+
+      /// x = A^{-1} b with the factorization of the last compute() (@p b
+      /// and @p x: full vectors, the same on every rank).
+      void
+      solve(const dealii::Vector<double> &b, dealii::Vector<double> &x);
 
     private:
       struct Data;

@@ -1,0 +1,76 @@
+#pragma once
+
+/**
+ * @file
+ * The stability of a converged state (doc/theory.md "Stability"): the
+ * number of negative eigenvalues of the tangent of the total potential,
+ * with the chamber terms.
+ *
+ * The field block K (membrane, cables, contact; with follower-pressure
+ * stiffness) is factorized by LDL^T (solvers/symmetric_inertia.h): its
+ * inertia is that of the same state under prescribed pressures and
+ * volumes. A chamber unknown lambda_j (gas pressure, liquid level) is
+ * coupled by a column B_j = dr/dlambda_j and a row C_j = dg_j/du; in the
+ * energy form they are proportional, B_j = alpha_j C_j^T, so that
+ * \f[ M = \begin{pmatrix} K & B \\ B^T & A D \end{pmatrix},\qquad
+ *     A = \mathrm{diag}(\alpha_j), \f]
+ * is symmetric: A D = -1/kappa for a gas of stiffness kappa = -dp/dV
+ * (amount control), -rho g / A_fs... for a liquid level, 0 for a volume
+ * constraint. Eliminating lambda (A D < 0) or restricting to the
+ * constraint (A D = 0) leaves one negative eigenvalue of M per chamber
+ * unknown, so by Haynsworth's inertia additivity
+ * \f[ n_-(\text{state}) = n_-(K) + n_-(S) - m,\qquad
+ *     S = A D - B^T K^{-1} B, \f]
+ * with m the coupled chamber unknowns (a prescribed pressure is not
+ * coupled and drops out). S is m x m and costs m substitutions.
+ *
+ * MUMPS reads the upper triangle of K: with friction, or a follower
+ * pressure on an open surface with free edges, K is not symmetric, the
+ * count is that of the symmetric matrix of its upper triangle, and the
+ * report says so (asymmetry, relative).
+ */
+
+#include <pneuma/solvers/bordered_vector.h>
+#include <pneuma/solvers/symmetric_inertia.h>
+
+#include <memory>
+#include <string>
+
+namespace pneuma
+{
+  class Model;
+
+  namespace solvers
+  {
+    /// The stability of one converged state.
+    struct StabilityReport
+    {
+      bool computed = false;
+      /// Negative eigenvalues of the state (chamber terms included).
+      long long negative = 0;
+      /// Of K alone: the state under prescribed pressures and volumes.
+      long long negative_field = 0;
+      /// Zero pivots of K (a singular tangent: the counts are not exact).
+      long long zero = 0;
+      /// |y.Kx - x.Ky| / (|Kx| |y|) for two fixed vectors.
+      double asymmetry = 0.;
+      /// Why the count is not exact (empty: it is).
+      std::string note;
+    };
+
+    /// Computes StabilityReport for converged states of a model.
+    class StabilityCheck
+    {
+    public:
+      explicit StabilityCheck(const MPI_Comm comm);
+
+      /// Assemble the tangent at @p state (the model is at its time) and
+      /// count.
+      StabilityReport
+      check(Model &model, const BorderedVector &state);
+
+    private:
+      SymmetricInertia inertia;
+    };
+  } // namespace solvers
+} // namespace pneuma
