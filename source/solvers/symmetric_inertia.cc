@@ -51,6 +51,10 @@ namespace pneuma
       id.icntl[12]      = 1; // ICNTL(13): no ScaLAPACK root (exact count)
       id.icntl[17]      = 3; // ICNTL(18): distributed triplets
       id.icntl[23]      = 1; // ICNTL(24): detect null pivots
+      // ICNTL(7) = 2: the approximate minimum fill ordering, as for the
+      // Newton solves (METIS's analysis costs several factorizations on
+      // membrane meshes, benchmarks/inflated_cylinder/results.md).
+      id.icntl[6] = 2;
       id.cntl[2]        = zero_pivot_threshold; // CNTL(3)
     }
 
