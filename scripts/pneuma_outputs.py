@@ -19,7 +19,10 @@ def history(directory):
     with open(f"{directory}/history.csv") as f:
         reader = csv.reader(f)
         names = [_name(h) for h in next(reader)]
-        return [{n: float(v) for n, v in zip(names, row)} for row in reader]
+        # An empty field is a value that was not finite or not computed
+        # (e.g. the stability columns of the reference state): NaN.
+        return [{n: float(v) if v else float("nan")
+                 for n, v in zip(names, row)} for row in reader]
 
 
 def history_units(directory):
