@@ -236,13 +236,27 @@ namespace pneuma
           {
             if (!stability)
               stability = std::make_unique<solvers::StabilityCheck>(comm);
-            r              = stability->check(model, state);
+            // A factorization that fails (MUMPS workspace, a broken
+            // tangent) leaves the state unjudged, never the run stopped.
+            try
+              {
+                r = stability->check(model, state);
+              }
+            catch (const std::exception &e)
+              {
+                r          = solvers::StabilityReport();
+                r.computed = false;
+                r.note     = std::string("not computed: ") + e.what();
+              }
             last_stability = r;
-            pcout << "  stability: " << r.negative
-                  << " negative eigenvalue(s); under prescribed pressures "
-                  << r.negative_field
-                  << (r.note.empty() ? "" : " (" + r.note + ")") << std::endl;
-            if (r.negative > 0)
+            if (!r.computed)
+              pcout << "  stability: " << r.note << std::endl;
+            else
+              pcout << "  stability: " << r.negative
+                    << " negative eigenvalue(s); under prescribed pressures "
+                    << r.negative_field
+                    << (r.note.empty() ? "" : " (" + r.note + ")") << std::endl;
+            if (r.computed && r.negative > 0)
               {
                 if (unstable_steps == 0)
                   first_unstable = step.time;
