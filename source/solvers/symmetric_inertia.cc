@@ -55,7 +55,7 @@ namespace pneuma
       // Newton solves (METIS's analysis costs several factorizations on
       // membrane meshes, benchmarks/inflated_cylinder/results.md).
       id.icntl[6] = 2;
-      id.cntl[2]        = zero_pivot_threshold; // CNTL(3)
+      id.cntl[2]  = zero_pivot_threshold; // CNTL(3)
     }
 
     SymmetricInertia::~SymmetricInertia()
