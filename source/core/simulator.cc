@@ -59,6 +59,8 @@ namespace pneuma
     solvers::StabilityReport                 last_stability;
     unsigned int                             unstable_steps = 0;
     double first_unstable = std::numeric_limits<double>::quiet_NaN();
+    /// Bracket of the bisection of a critical point, relative to the step.
+    double locate_tolerance = 1e-2;
     /// The checkpoint a restart continues (null: a fresh run).
     std::unique_ptr<Checkpoint> restart;
     /// Wall time of the run before its restart.
@@ -101,6 +103,14 @@ namespace pneuma
       "step, chamber terms included (MUMPS LDL^T of the field block and "
       "the chamber Schur complement: one extra assembly and symmetric "
       "factorization per step). An unstable state gets a warning.");
+    prm.add_parameter(
+      "Locate critical points",
+      impl->locate_tolerance,
+      "Where the count changes between two converged steps (a bifurcation "
+      "under load control), bisect in pseudo time until the bracket is this "
+      "fraction of the step (each probe is a Newton solve from the earlier "
+      "state); 0: do not locate.",
+      Patterns::Double(0., 1.));
     prm.leave_subsection();
   }
 
@@ -119,6 +129,28 @@ namespace pneuma
                 "adaptive refinement studies (Adaptive refinement/Cycles > "
                 "0) cannot be checkpointed; run the cycles again instead");
     impl->path.stop_after(impl->checkpoints.stop_after());
+    if (impl->check_stability)
+      {
+        Impl &s = *impl;
+        // A factorization that fails (MUMPS workspace, a broken tangent)
+        // leaves the state unjudged, never the run stopped.
+        s.path.set_judge(
+          [&s](const solvers::BorderedVector &state) {
+            if (!s.stability)
+              s.stability = std::make_unique<solvers::StabilityCheck>(s.comm);
+            try
+              {
+                return s.stability->check(s.model, state);
+              }
+            catch (const std::exception &e)
+              {
+                solvers::StabilityReport r;
+                r.note = std::string("not computed: ") + e.what();
+                return r;
+              }
+          },
+          s.locate_tolerance);
+      }
     if (impl->output.quiet())
       {
         impl->pcout.set_condition(false);
@@ -230,33 +262,24 @@ namespace pneuma
       {
         // The converged states after the reference state (whose tangent
         // is singular for a stress-free membrane).
-        const double             nan = std::numeric_limits<double>::quiet_NaN();
-        solvers::StabilityReport r;
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        const solvers::StabilityReport &r = step.stability;
         if (step.step > 0)
           {
-            if (!stability)
-              stability = std::make_unique<solvers::StabilityCheck>(comm);
-            // A factorization that fails (MUMPS workspace, a broken
-            // tangent) leaves the state unjudged, never the run stopped.
-            try
-              {
-                r = stability->check(model, state);
-              }
-            catch (const std::exception &e)
-              {
-                r          = solvers::StabilityReport();
-                r.computed = false;
-                r.note     = std::string("not computed: ") + e.what();
-              }
-            last_stability = r;
+            if (r.energy_form)
+              last_stability = r;
             if (!r.computed)
               pcout << "  stability: " << r.note << std::endl;
+            else if (!r.energy_form)
+              pcout << "  stability: under prescribed pressures "
+                    << r.negative_field << " negative eigenvalue(s); " << r.note
+                    << std::endl;
             else
               pcout << "  stability: " << r.negative
                     << " negative eigenvalue(s); under prescribed pressures "
                     << r.negative_field
                     << (r.note.empty() ? "" : " (" + r.note + ")") << std::endl;
-            if (r.computed && r.negative > 0)
+            if (r.computed && r.energy_form && r.negative > 0)
               {
                 if (unstable_steps == 0)
                   first_unstable = step.time;
@@ -268,7 +291,7 @@ namespace pneuma
           }
         row.add_count(run,
                       "negative_eigenvalues",
-                      r.computed ? r.negative : nan,
+                      r.computed && r.energy_form ? r.negative : nan,
                       Statistics::history);
         row.add_count(run,
                       "negative_eigenvalues_prescribed_pressure",
@@ -464,6 +487,16 @@ namespace pneuma
     if (check_stability)
       {
         row.add_count(run, "unstable_steps", unstable_steps, counts);
+        for (unsigned int k = 0; k < path_result.critical_points.size(); ++k)
+          {
+            const auto           &c = path_result.critical_points[k];
+            const StatisticsGroup g{"cp", "critical_points", "point", k + 1};
+            row.add(g, "time", "", c.time, counts);
+            row.add(g, "bracket", "", c.bracket, counts);
+            row.add_count(g, "step", c.step, counts);
+            row.add_count(g, "negative_before", c.before, counts);
+            row.add_count(g, "negative_after", c.after, counts);
+          }
         row.add(run, "first_unstable_time", "", first_unstable, counts);
         row.add_count(run,
                       "negative_eigenvalues",

@@ -32,6 +32,45 @@ namespace pneuma
       newton_solver.parse_parameters(prm);
     }
 
+    CriticalPoint
+    StaticLoadPath::locate(Model                &model,
+                           const BorderedVector &last,
+                           const double          t_old,
+                           const double          t_new,
+                           const long long       before,
+                           const long long       after)
+    {
+      // Each probe solves from the last accepted state (its subsystems'
+      // committed state is intact: the new step is not yet committed) to
+      // the middle of the bracket, judges it and is rejected.
+      const ConditionalOStream quiet(std::cout, false);
+      CriticalPoint            c;
+      c.before  = before;
+      c.after   = after;
+      double lo = t_old, hi = t_new;
+      while (hi - lo > locate_tolerance * (t_new - t_old) && c.probes < 40)
+        {
+          const double mid = 0.5 * (lo + hi);
+          model.reject_step(t_old);
+          BorderedVector    probe(last);
+          const std::string impossible = model.begin_step(mid, probe);
+          ++c.probes;
+          if (!impossible.empty())
+            break;
+          const auto newton = newton_solver.solve(model, probe, quiet, false);
+          if (!newton.converged || !model.check_state(probe).empty())
+            break;
+          const StabilityReport r = stability_judge(probe);
+          if (!r.computed)
+            break;
+          (r.negative == before ? lo : hi) = mid;
+        }
+      model.reject_step(t_old);
+      c.time    = 0.5 * (lo + hi);
+      c.bracket = hi - lo;
+      return c;
+    }
+
     PathResult
     StaticLoadPath::run(Model                                      &model,
                         const ConditionalOStream                   &out,
@@ -62,12 +101,17 @@ namespace pneuma
                                            ? p.stiffness_stage
                                            : numbers::invalid_unsigned_int;
           current                      = p;
+          previous_stability           = StabilityReport();
+          previous_stability.computed  = p.negative_eigenvalues >= 0;
+          previous_stability.negative  = p.negative_eigenvalues;
+          result.critical_points       = p.critical_points;
         }
       else
         {
-          result.state      = model.initial_state();
-          current           = PathState();
-          current.increment = dt;
+          result.state       = model.initial_state();
+          current            = PathState();
+          previous_stability = StabilityReport();
+          current.increment  = dt;
           observer(PathStep{}, result.state);
         }
       BorderedVector last(result.state);
@@ -86,6 +130,9 @@ namespace pneuma
           current.stiffness_stage_set ? stiffness_stage : 0;
         current.step_iterations       = result.step_iterations;
         current.last_residual_history = result.last_residual_history;
+        current.negative_eigenvalues =
+          previous_stability.computed ? previous_stability.negative : -1;
+        current.critical_points = result.critical_points;
       };
 
       while (!stepping.finished(t))
@@ -133,6 +180,42 @@ namespace pneuma
                 }
             }
 
+          // The stability of the converged state, before it is committed;
+          // a change of the count is located between the two states.
+          StabilityReport stability;
+          if (newton.converged && stability_judge)
+            {
+              stability = stability_judge(result.state);
+              if (locate_tolerance > 0. && stability.computed
+                  && stability.energy_form && previous_stability.computed
+                  && previous_stability.energy_form
+                  && stability.negative != previous_stability.negative)
+                {
+                  const BorderedVector accepted(result.state);
+                  CriticalPoint        c = locate(model,
+                                           last,
+                                           t_old,
+                                           t_new,
+                                           previous_stability.negative,
+                                           stability.negative);
+                  c.step                 = result.steps + 1;
+                  // Back to the accepted state: prepare the step exactly
+                  // as before the probes (from the last state: the same
+                  // prescribed values, contact candidates and border
+                  // scales that the accepted state was solved with), then
+                  // judge it again (an assembly at it: its friction state).
+                  BorderedVector again(last);
+                  model.begin_step(t_new, again);
+                  result.state = accepted;
+                  stability    = stability_judge(result.state);
+                  out << "  critical point: " << c.type << " at t = " << c.time
+                      << " (+-" << 0.5 * c.bracket << "), negative eigenvalues "
+                      << c.before << " -> " << c.after << ", " << c.probes
+                      << " probes" << std::endl;
+                  result.critical_points.push_back(c);
+                }
+            }
+
           // 3. Reject: back to the last state with a smaller increment.
           if (!newton.converged && newton.failure_reason == "interrupted")
             {
@@ -172,6 +255,8 @@ namespace pneuma
             }
 
           // 4. Accept.
+          if (stability.computed && stability.energy_form)
+            previous_stability = stability;
           t = t_new;
           ++result.steps;
           model.commit_step(t_new, result.state);
@@ -198,7 +283,8 @@ namespace pneuma
                             t_new,
                             newton.iterations,
                             newton.convergence_test,
-                            stiffness},
+                            stiffness,
+                            stability},
                    result.state);
           if (stop_step > 0 && result.steps >= stop_step
               && !stepping.finished(t))

@@ -89,7 +89,7 @@ namespace pneuma
           LA::Vector   d(c.B[j]);
           d.add(-a, c.C[j]);
           if (d.l2_norm() > round_off * c.B[j].l2_norm())
-            report.note = "a chamber row is not the transpose of its column";
+            report.energy_form = false;
           kept.push_back(j);
           alpha.push_back(a);
         }
@@ -120,9 +120,16 @@ namespace pneuma
             for (unsigned int j = 0; j < m; ++j)
               scale = std::max(scale, std::abs(AD(i, j)));
           if (scale > 0. && negative_eigenvalues(minus_AD) > 0)
-            report.note = "a chamber block is not of energy form";
+            report.energy_form = false;
         }
       report.negative = k.negative + negative_eigenvalues(S) - m;
+      if (!report.energy_form)
+        {
+          report.negative = -1;
+          report.note = "the chamber terms are not of energy form (liquid and "
+                        "gas in one chamber): only the count under "
+                        "prescribed pressures is known";
+        }
       if (report.asymmetry > round_off && report.note.empty())
         report.note = "the tangent is not symmetric (friction, or follower "
                       "pressure on free edges): the count is that of its "

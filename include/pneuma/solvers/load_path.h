@@ -24,6 +24,7 @@
 #include <pneuma/solvers/bordered_vector.h>
 #include <pneuma/solvers/load_stepping.h>
 #include <pneuma/solvers/newton_solver.h>
+#include <pneuma/solvers/stability.h>
 
 #include <functional>
 #include <string>
@@ -44,6 +45,31 @@ namespace pneuma
       std::string  convergence_test;
       /// Bergan's current stiffness parameter (1 in a stage's first step).
       double stiffness_parameter = 1.;
+      /// The stability of the state (computed: false if not judged).
+      StabilityReport stability;
+    };
+
+    /**
+     * A change of the negative-eigenvalue count between two converged
+     * states, located by bisection in pseudo time. Under load control the
+     * control parameter grows through it, so it is a bifurcation point (a
+     * limit point of the control cannot be passed by load control).
+     */
+    struct CriticalPoint
+    {
+      unsigned int step    = 0;           ///< the step whose state is past it
+      double       time    = 0.;          ///< the middle of the final bracket
+      double       bracket = 0.;          ///< width of the final bracket
+      long long    before = 0, after = 0; ///< the counts on both sides
+      unsigned int probes = 0;            ///< Newton solves of the bisection
+      std::string  type   = "bifurcation";
+
+      template <class Archive>
+      void
+      serialize(Archive &ar, const unsigned int)
+      {
+        ar &step &time &bracket &before &after &probes &type;
+      }
     };
 
     /// Where the path stands after a converged step: what a restart needs
@@ -57,6 +83,10 @@ namespace pneuma
       bool                      stiffness_stage_set = false;
       std::vector<unsigned int> step_iterations;
       std::vector<double>       last_residual_history;
+      /// The stability count of the last judged state (-1: none).
+      long long negative_eigenvalues = -1;
+      /// The critical points passed so far.
+      std::vector<CriticalPoint> critical_points;
 
       template <class Archive>
       void
@@ -65,6 +95,7 @@ namespace pneuma
         ar &time &increment &steps &cutbacks     &newton_iterations;
         ar &stiffness_reference &stiffness       &stiffness_stage;
         ar &stiffness_stage_set &step_iterations &last_residual_history;
+        ar &negative_eigenvalues                 &critical_points;
       }
     };
 
@@ -81,6 +112,8 @@ namespace pneuma
       std::vector<double> last_residual_history;
       /// The last converged state.
       BorderedVector state;
+      /// Critical points passed (located if a tolerance is set).
+      std::vector<CriticalPoint> critical_points;
     };
 
     /// The load-controlled path through the stages.
@@ -123,6 +156,20 @@ namespace pneuma
         stop_step = step;
       }
 
+      /// Judges the stability of a converged state before it is committed.
+      using Judge = std::function<StabilityReport(const BorderedVector &)>;
+      /**
+       * Judge every converged state with @p judge; where the count
+       * changes between two steps, bisect in pseudo time until the bracket
+       * is @p tolerance times the step (0: do not locate).
+       */
+      void
+      set_judge(const Judge &judge, const double tolerance)
+      {
+        stability_judge  = judge;
+        locate_tolerance = tolerance;
+      }
+
       const NewtonSolver &
       newton() const
       {
@@ -134,6 +181,20 @@ namespace pneuma
       NewtonSolver newton_solver;
       PathState    current;
       unsigned int stop_step = 0;
+      Judge        stability_judge;
+      double       locate_tolerance = 0.;
+      /// The count of the last accepted state (for a restart too).
+      StabilityReport previous_stability;
+
+      /// Bisect [t_old, t_new] for the change of the count from
+      /// @p before to @p after; Newton solves from @p last (quietly).
+      CriticalPoint
+      locate(Model                &model,
+             const BorderedVector &last,
+             const double          t_old,
+             const double          t_new,
+             const long long       before,
+             const long long       after);
     };
   } // namespace solvers
 } // namespace pneuma

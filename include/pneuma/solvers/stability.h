@@ -52,6 +52,10 @@ namespace pneuma
       long long negative_field = 0;
       /// Zero pivots of K (a singular tangent: the counts are not exact).
       long long zero = 0;
+      /// The chamber terms are of energy form, so that @p negative is the
+      /// count of the state (false, e.g., for liquid and gas in one
+      /// chamber: only negative_field is known).
+      bool energy_form = true;
       /// |y.Kx - x.Ky| / (|Kx| |y|) for two fixed vectors.
       double asymmetry = 0.;
       /// Why the count is not exact (empty: it is).
