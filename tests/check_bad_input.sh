@@ -199,6 +199,9 @@ check "$dir/valid.prm"              1 "Geometry/Global refinements: 12 refinemen
 check "$dir/valid.prm"              1 "Geometry/Global refinements: 1 refinements of 12 coarse cells make 48 cells and about 144 unknowns, which need about 0.2 GB of memory; the limit is 0.001 GB" --set "Geometry/Memory limit=0.001"
 check "$dir/valid.prm"              1 "Geometry/Global refinements: The string <13>" --set "Geometry/Global refinements=13"
 NP=3 check_mpi "$dir/valid.prm"     1 "Geometry/Global refinements: 12 refinements" --set "Geometry/Global refinements=12"
+# Stability entries.
+check "$dir/valid.prm"              1 "Stability/Locate critical points: The string <2> does not match" --set "Stability/Locate critical points=2"
+check "$dir/valid.prm"              1 "Stability/Check inertia: The string <maybe> does not match" --set "Stability/Check inertia=maybe"
 # Checkpoints: missing, damaged, of another scene, not allowed.
 check --restart                     1 "--restart needs a checkpoint directory" "$dir/valid.prm"
 check "$dir/valid.prm"              1 "--restart /nonexistent: cannot open '/nonexistent/state.bin' (is it a checkpoint directory?)" --restart /nonexistent
