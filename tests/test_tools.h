@@ -106,6 +106,40 @@ namespace pneuma_test
     return ok;
   }
 
+  /**
+   * The incompressible neo-Hookean sphere of V3 (R = 1 m, H = 1 mm,
+   * mu = 1 MPa, Q2 on 3 refinements) as the one wall of chamber 1, inflated
+   * through three stages to t = 2 (the chamber's control comes from the
+   * caller).
+   */
+  inline Settings
+  neo_hookean_sphere_chamber()
+  {
+    return {{"Geometry/Type", "sphere"},
+            {"Geometry/sphere/Radius", "1"},
+            {"Geometry/Global refinements", "3"},
+            {"Discretisation/Polynomial degree", "2"},
+            {"Materials/Region 0/Law", "neo-Hookean"},
+            {"Materials/Region 0/Thickness", "1e-3"},
+            {"Materials/Region 0/neo-Hookean/Shear modulus", "1e6"},
+            {"Boundary conditions/Fixed points",
+             "0,0,1: xy; 0,0,-1: xy; 1,0,0: yz; -1,0,0: yz"},
+            {"Chambers/Number of chambers", "1"},
+            {"Chambers/Chamber 1/Regions", "0"},
+            {"Load stepping/Stage end times", "0.5, 1, 2"},
+            {"Load stepping/Initial increment", "0.1"},
+            {"Load stepping/Maximum increment", "0.25"}};
+  }
+
+  /// The gas amount V_n/V0 (adiabatic air, kappa 1.4, p_a = 101325 Pa)
+  /// that keeps a neo-Hookean balloon (mu H/R = 1000 Pa) on its
+  /// equilibrium path at the stretch l = 1 + t: l^3 (1 + p(l)/p_a)^(1/kappa).
+  inline const char *
+  balloon_gas_amount()
+  {
+    return "(1+t)^3*(1+2000*(1/(1+t)-1/(1+t)^7)/101325)^(1/1.4)";
+  }
+
   /// |reactions + applied loads| / |applied vertical load| of a run: zero
   /// up to round-off when every force reaches the supports.
   inline double

@@ -151,17 +151,27 @@ namespace pneuma
             if (ours)
               fs::remove_all(entry.path(), ec);
           }
+      }
+    start_history(comm, "");
+  }
+
+  void
+  OutputWriter::start_history(const MPI_Comm comm, const std::string &text)
+  {
+    if (root)
+      {
         history =
           std::make_unique<std::ofstream>(output_directory + "/history.csv");
+        *history << text << std::flush;
       }
     bool ok = !root || static_cast<bool>(*history);
     ok      = Utilities::MPI::broadcast(comm, ok, 0);
     check_input(ok,
                 "Output/Directory",
                 "cannot write into '" + output_directory + "'");
+    history_text    = text;
     history_columns = 0;
-    header_written  = false;
-    history_text.clear();
+    header_written  = !text.empty();
   }
 
   void
@@ -236,18 +246,8 @@ namespace pneuma
               fs::remove(entry.path(), ec);
           }
         fs::remove(output_directory + "/summary.json", ec);
-        history =
-          std::make_unique<std::ofstream>(output_directory + "/history.csv");
-        *history << history_so_far << std::flush;
       }
-    bool ok = !root || static_cast<bool>(*history);
-    ok      = Utilities::MPI::broadcast(comm, ok, 0);
-    check_input(ok,
-                "Output/Directory",
-                "cannot write into '" + output_directory + "'");
-    history_text    = history_so_far;
-    history_columns = 0;
-    header_written  = !history_so_far.empty();
+    start_history(comm, history_so_far);
   }
 
   void

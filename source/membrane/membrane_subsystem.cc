@@ -287,17 +287,10 @@ namespace pneuma
                   "mesh instead");
     }
 
-    void
-    MembraneSubsystem::check_well_posed() const
+    Point<3>
+    MembraneSubsystem::support_centroid(
+      std::map<types::global_dof_index, Point<3>> &support) const
     {
-      // A rigid motion r (3 translations, 3 rotations about the centroid,
-      // scaled to unit size over the membrane) is removed by the supports
-      // iff it moves some prescribed dof: the free motions are the null
-      // space of G = sum over prescribed dofs i of r(i) r(i)^T (6 x 6).
-      // Rigid plates and ties follow rigid motions, so they count through
-      // their prescribed masters. Checked before the first factorization,
-      // so that an ill-posed scene is a message, not minutes of cut-backs.
-      std::map<types::global_dof_index, Point<3>> support;
       DoFTools::map_dofs_to_support_points(*mapping_cache, dofs, support);
       Point<3> centre;
       double   count = 0.;
@@ -309,8 +302,22 @@ namespace pneuma
           }
       for (unsigned int d = 0; d < 3; ++d)
         centre[d] = Utilities::MPI::sum(centre[d], comm);
-      centre /= std::max(1., Utilities::MPI::sum(count, comm));
-      double size = 0.;
+      return centre / std::max(1., Utilities::MPI::sum(count, comm));
+    }
+
+    void
+    MembraneSubsystem::check_well_posed() const
+    {
+      // A rigid motion r (3 translations, 3 rotations about the centroid,
+      // scaled to unit size over the membrane) is removed by the supports
+      // iff it moves some prescribed dof: the free motions are the null
+      // space of G = sum over prescribed dofs i of r(i) r(i)^T (6 x 6).
+      // Rigid plates and ties follow rigid motions, so they count through
+      // their prescribed masters. Checked before the first factorization,
+      // so that an ill-posed scene is a message, not minutes of cut-backs.
+      std::map<types::global_dof_index, Point<3>> support;
+      const Point<3> centre = support_centroid(support);
+      double         size   = 0.;
       for (const auto &[i, x] : support)
         size = std::max(size, x.distance(centre));
       size = std::max(Utilities::MPI::max(size, comm), 1e-300);
@@ -434,18 +441,7 @@ namespace pneuma
       if (model.linear_solver().type() != "amg")
         return;
       std::map<types::global_dof_index, Point<3>> support;
-      DoFTools::map_dofs_to_support_points(*mapping_cache, dofs, support);
-      Point<3> centre;
-      double   count = 0.;
-      for (const auto &[i, x] : support)
-        if (owned_dofs.is_element(i))
-          {
-            centre += x;
-            count += 1.;
-          }
-      for (unsigned int d = 0; d < 3; ++d)
-        centre[d] = Utilities::MPI::sum(centre[d], comm);
-      centre /= std::max(1., Utilities::MPI::sum(count, comm));
+      const Point<3> centre = support_centroid(support);
       // The rotation about axis a moves a dof of component c by
       // (e_a x r)_c.
       for (unsigned int k = 0; k < owned.n_elements(); ++k)

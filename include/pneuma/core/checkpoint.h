@@ -63,12 +63,6 @@ namespace pneuma
       sections[name] = dealii::Utilities::pack(value, false);
     }
 
-    bool
-    has(const std::string &name) const
-    {
-      return sections.count(name) > 0;
-    }
-
     /// The value stored under @p name; an InputError naming the restart
     /// directory if there is none (a checkpoint of another scene).
     template <typename T>

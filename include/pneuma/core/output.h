@@ -113,6 +113,11 @@ namespace pneuma
     }
 
   private:
+    /// Start history.csv with @p text (its rows so far; empty: none) and
+    /// check on every rank that it could be opened.
+    void
+    start_history(const MPI_Comm comm, const std::string &text);
+
     std::string                    output_directory = "output";
     bool                           vtu              = true;
     unsigned int                   interval         = 1;

@@ -31,6 +31,7 @@
 #include <pneuma/membrane/membrane_assembler.h>
 
 #include <array>
+#include <map>
 #include <memory>
 #include <set>
 #include <vector>
@@ -207,6 +208,11 @@ namespace pneuma
       /// The mapping of the current mesh, its support points cached.
       void
       cache_mapping();
+      /// The support points of this rank's dofs and the centroid of all
+      /// owned ones over the ranks (the centre of the rigid rotations).
+      Point<3>
+      support_centroid(
+        std::map<types::global_dof_index, Point<3>> &support) const;
       /// Masters that dependent dofs refer to (share_constraints.h).
       IndexSet
       shared_masters() const;
