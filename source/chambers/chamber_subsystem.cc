@@ -132,6 +132,7 @@ namespace pneuma
       // terms), which runs first.
       const unsigned int offset = model.border_offset(*this);
       Vector<double>     residual;
+      system.set_time(a.time);
       system.evaluate(
         own_part(*a.border), measures, residual, *a.coupling, offset);
       for (unsigned int j = 0; j < residual.size(); ++j)

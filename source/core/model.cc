@@ -6,6 +6,7 @@
 #include <pneuma/core/input_layout.h>
 #include <pneuma/core/interrupt.h>
 #include <pneuma/core/model.h>
+#include <pneuma/solvers/path_following.h>
 
 #include <cmath>
 
@@ -146,6 +147,7 @@ namespace pneuma
     external.reinit(owned, comm);
     ghosted.reinit(owned, relevant, comm);
     coupling.reinit(n_border, external);
+    scratch_coupling.reinit(n_border, external);
     for (const auto &s : subsystems)
       s->finish_setup();
     rebuild_matrices();
@@ -467,35 +469,50 @@ namespace pneuma
   Model::assemble(const solvers::BorderedVector &u,
                   solvers::BorderedVector       &residual)
   {
-    TimerOutput::Scope t(*timers, "assembly");
+    tangent  = 0.;
+    external = 0.;
+    assemble_into(u, current_time, residual, &tangent, &external, coupling);
+  }
+
+  void
+  Model::assemble_into(const solvers::BorderedVector &u,
+                       const double                   t,
+                       solvers::BorderedVector       &residual,
+                       LA::SparseMatrix              *K,
+                       LA::Vector                    *f_ext,
+                       solvers::BorderCoupling       &border)
+  {
+    TimerOutput::Scope ts(*timers, "assembly");
     ghost(u.field);
-    tangent        = 0.;
     residual.field = 0.;
-    external       = 0.;
     residual.border.reinit(n_border());
     Assembly a;
-    a.time            = current_time;
+    a.time            = t;
     a.field           = &ghosted;
     a.border          = &u.border;
     a.constraints     = &update_constraints;
     a.residual        = &residual.field;
-    a.tangent         = &tangent;
-    a.external        = &external;
+    a.tangent         = K;
+    a.external        = f_ext;
     a.border_residual = &residual.border;
-    a.coupling        = &coupling;
+    a.coupling        = &border;
     for (const auto &s : subsystems)
       s->assemble(a);
   }
 
   void
-  Model::solve_linear(const double                   shift,
-                      const solvers::BorderedVector &rhs,
-                      solvers::BorderedVector       &du)
+  Model::assemble_residual(const solvers::BorderedVector &u,
+                           const double                   t,
+                           solvers::BorderedVector       &residual)
+  {
+    assemble_into(u, t, residual, nullptr, nullptr, scratch_coupling);
+  }
+
+  void
+  Model::solve_again(const solvers::BorderedVector &rhs,
+                     solvers::BorderedVector       &du)
   {
     TimerOutput::Scope t(*timers, "linear solve");
-    if (shift > 0.)
-      tangent.add(shift, laplacian);
-    solver.factorize(tangent);
     if (n_border() == 0)
       {
         solver.solve(tangent, du.field, rhs.field);
@@ -504,6 +521,33 @@ namespace pneuma
     else
       coupling.solve(solver, tangent, rhs, du);
     update_constraints.distribute(du.field);
+  }
+
+  bool
+  Model::prescribed_values_change(const double t0, const double t1) const
+  {
+    LA::Vector a = make_field(), b = make_field();
+    for (const auto &s : subsystems)
+      {
+        s->set_prescribed_values(t0, a);
+        s->set_prescribed_values(t1, b);
+      }
+    a -= b;
+    return a.linfty_norm() > 0.;
+  }
+
+  void
+  Model::solve_linear(const double                   shift,
+                      const solvers::BorderedVector &rhs,
+                      solvers::BorderedVector       &du)
+  {
+    {
+      TimerOutput::Scope t(*timers, "linear solve");
+      if (shift > 0.)
+        tangent.add(shift, laplacian);
+      solver.factorize(tangent);
+    }
+    solve_again(rhs, du);
     ++linear_solves;
   }
 
@@ -633,7 +677,10 @@ namespace pneuma
   // Finite-difference check of the tangent
   // ------------------------------------------------------------------
   TangentCheck
-  Model::check_tangent(const double t, const double amplitude, const double h)
+  Model::check_tangent(const double t,
+                       const double amplitude,
+                       const double h,
+                       const bool   path_constraint)
   {
     current_time = t;
     // A smooth random state: random nodal values scaled by amplitude.
@@ -683,6 +730,44 @@ namespace pneuma
             u.border[j] *= 1.01;
             direction.border[j] = 0.3 + 0.1 * j;
           }
+      }
+
+    if (path_constraint)
+      {
+        // The bordered system about a centre off the state, with the load
+        // factor moving too.
+        using P = solvers::PathConstraintProblem;
+        P                       problem(*this, 1e-6);
+        solvers::BorderedVector center(u);
+        for (const auto i : owned)
+          center.field[i] -= 0.3 * amplitude * std::sin(0.53 * i + 0.2);
+        center.field.compress(VectorOperation::insert);
+        const auto x = P::extend(u, t);
+        problem.set_arc_length(P::extend(center, t - 0.05),
+                               0.1,
+                               std::max(u.field.l2_norm(), 1e-300),
+                               1.,
+                               1e3);
+        auto                    d = P::extend(direction, 0.3);
+        solvers::BorderedVector r, rp, rm, Jd;
+        problem.assemble(x, r);
+        problem.vmult(d, Jd);
+        auto full = d;
+        update_constraints.distribute(full.field);
+        auto xp = x;
+        xp.add(h, full);
+        auto xm = x;
+        xm.add(-h, full);
+        problem.assemble(xp, rp);
+        problem.assemble(xm, rm);
+        rp -= rm;
+        rp *= 1. / (2. * h);
+        TangentCheck check;
+        check.tangent_norm = Jd.l2_norm();
+        rp -= Jd;
+        check.relative_error =
+          rp.l2_norm() / std::max(check.tangent_norm, 1e-300);
+        return check;
       }
 
     solvers::BorderedVector r(u), r_plus(u), r_minus(u), Kd(u), fd(u);

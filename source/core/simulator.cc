@@ -183,9 +183,11 @@ namespace pneuma
   std::pair<double, double>
   Simulator::check_tangent(const double t,
                            const double amplitude,
-                           const double h)
+                           const double h,
+                           const bool   path_constraint)
   {
-    const TangentCheck c = impl->model.check_tangent(t, amplitude, h);
+    const TangentCheck c =
+      impl->model.check_tangent(t, amplitude, h, path_constraint);
     return {c.relative_error, c.tangent_norm};
   }
 
@@ -257,6 +259,11 @@ namespace pneuma
                   step.iterations,
                   Statistics::history);
     row.add(run, "wall_seconds", "s", wall_time(), Statistics::history);
+    if (path.follows_path())
+      {
+        row.add(run, "load_factor", "", step.load_factor, Statistics::history);
+        row.add(run, "arc_length", "", step.arc_length, Statistics::history);
+      }
     model.add_statistics(row, state);
     if (check_stability)
       {
@@ -453,6 +460,7 @@ namespace pneuma
     result.message               = path_result.message;
     result.step_iterations       = path_result.step_iterations;
     result.last_residual_history = path_result.last_residual_history;
+    result.residual_histories    = path_result.residual_histories;
 
     Statistics            &row    = result.summary;
     const auto             run    = StatisticsGroup::run();
@@ -484,19 +492,24 @@ namespace pneuma
     row.add(
       run, "final_time", "", path_result.final_time, counts | Statistics::test);
     model.add_statistics(row, path_result.state);
+    // Critical points: located by the stability check, or limit points
+    // where a followed path turned back.
+    for (unsigned int k = 0; k < path_result.critical_points.size(); ++k)
+      {
+        const auto           &c = path_result.critical_points[k];
+        const StatisticsGroup g{"cp", "critical_points", "point", k + 1};
+        row.add(g, "time", "", c.time, counts);
+        row.add(g, "bracket", "", c.bracket, counts);
+        row.add_count(g, "step", c.step, counts);
+        row.add_count(g, "limit_point", c.type == "limit point", counts);
+        row.add_count(g, "negative_before", c.before, counts);
+        row.add_count(g, "negative_after", c.after, counts);
+        if (path.follows_path())
+          row.add(g, "monitor", "m", c.monitor, counts);
+      }
     if (check_stability)
       {
         row.add_count(run, "unstable_steps", unstable_steps, counts);
-        for (unsigned int k = 0; k < path_result.critical_points.size(); ++k)
-          {
-            const auto           &c = path_result.critical_points[k];
-            const StatisticsGroup g{"cp", "critical_points", "point", k + 1};
-            row.add(g, "time", "", c.time, counts);
-            row.add(g, "bracket", "", c.bracket, counts);
-            row.add_count(g, "step", c.step, counts);
-            row.add_count(g, "negative_before", c.before, counts);
-            row.add_count(g, "negative_after", c.after, counts);
-          }
         row.add(run, "first_unstable_time", "", first_unstable, counts);
         row.add_count(run,
                       "negative_eigenvalues",

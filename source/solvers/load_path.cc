@@ -1,6 +1,11 @@
+#include <pneuma/core/input_error.h>
 #include <pneuma/core/interrupt.h>
 #include <pneuma/core/model.h>
+#include <pneuma/membrane/membrane_subsystem.h>
 #include <pneuma/solvers/load_path.h>
+
+#include <algorithm>
+#include <limits>
 
 #include <csignal>
 #include <iomanip>
@@ -23,6 +28,57 @@ namespace pneuma
     {
       stepping.declare_parameters(prm);
       newton_solver.declare_parameters(prm);
+      prm.enter_subsection("Load stepping");
+      prm.add_parameter(
+        "Control",
+        control_names,
+        "How each stage is driven, one entry per stage (or one for all): "
+        "load (the pseudo time is prescribed), arc-length (the pseudo time "
+        "is the load factor, an unknown; the step is an arc length, see "
+        "Path following/Constraint) or displacement (the monitored "
+        "component of Path following is prescribed, the load factor is "
+        "an unknown). The loads that change over a path-controlled stage "
+        "are the ones it scales; its prescribed displacements must not "
+        "change. Increments of a path-controlled stage are in pseudo "
+        "time: the first step of the stage moves the load by Initial "
+        "increment.",
+        Patterns::List(Patterns::Selection("load|arc-length|displacement"), 1));
+      prm.enter_subsection("Path following");
+      prm.add_parameter("Constraint",
+                        constraint_name,
+                        "Arc-length constraint: cylindrical (Crisfield: "
+                        "the displacement increment alone) or spherical "
+                        "(displacement and load factor increments alike).",
+                        Patterns::Selection("cylindrical|spherical"));
+      prm.add_parameter("Monitor point",
+                        monitor_point,
+                        "Index (from 0) into Output/Monitor points of the "
+                        "point whose displacement is monitored: prescribed "
+                        "under displacement control, the target below, and "
+                        "reported at critical points.",
+                        Patterns::Integer(0));
+      prm.add_parameter("Monitor component",
+                        monitor_component,
+                        "Displacement component of the monitor.",
+                        Patterns::Selection("x|y|z"));
+      prm.add_parameter("Target monitor value",
+                        target_text,
+                        "The last stage, if path-controlled, ends when the "
+                        "monitored displacement [m] reaches this value "
+                        "(empty: when the load factor reaches the stage's "
+                        "end).",
+                        Patterns::Anything());
+      prm.add_parameter("Maximum steps",
+                        max_path_steps,
+                        "A path-controlled stage that has not reached its "
+                        "end in this many steps stops the run (exit 2).",
+                        Patterns::Integer(1));
+      prm.add_parameter("Stop at critical point",
+                        stop_at_critical,
+                        "Stop the run (exit 0) at the first critical point "
+                        "of a path-controlled stage, once located.");
+      prm.leave_subsection();
+      prm.leave_subsection();
     }
 
     void
@@ -30,6 +86,59 @@ namespace pneuma
     {
       stepping.parse_parameters(prm);
       newton_solver.parse_parameters(prm);
+      const std::string p = "Load stepping/";
+      check_input(control_names.size() == 1
+                    || control_names.size() == stepping.n_stages(),
+                  p + "Control",
+                  "needs one entry, or one per stage ("
+                    + std::to_string(stepping.n_stages()) + " stages in "
+                    + "Stage end times), not "
+                    + std::to_string(control_names.size()));
+      controls.clear();
+      for (const auto &c : control_names)
+        controls.push_back(c == "load"         ? Control::load
+                           : c == "arc-length" ? Control::arc_length
+                                               : Control::displacement);
+      has_target = !Utilities::trim(target_text).empty();
+      if (has_target)
+        {
+          char        *end   = nullptr;
+          const auto   text  = Utilities::trim(target_text);
+          const double value = std::strtod(text.c_str(), &end);
+          check_input(end != text.c_str() && *end == '\0'
+                        && std::isfinite(value),
+                      p + "Path following/Target monitor value",
+                      "must be a finite number or empty, not '" + text + "'");
+          target = value;
+          check_input(control_of(stepping.n_stages() - 1) != Control::load,
+                      p + "Path following/Target monitor value",
+                      "applies to the last stage, which is under load "
+                      "control (set Load stepping/Control)");
+        }
+    }
+
+    bool
+    StaticLoadPath::follows_path() const
+    {
+      for (unsigned int s = 0; s < stepping.n_stages(); ++s)
+        if (control_of(s) != Control::load)
+          return true;
+      return false;
+    }
+
+    LA::Vector
+    StaticLoadPath::monitor_functional(const Model &model) const
+    {
+      const auto *membrane = model.find<membrane::MembraneSubsystem>();
+      if (!membrane || monitor_point >= membrane->n_monitor_points())
+        return LA::Vector();
+      LA::Vector         w = model.make_field();
+      const unsigned int c = monitor_component[0] - 'x';
+      const auto         i = membrane->monitor_dof(monitor_point, c);
+      if (i != numbers::invalid_dof_index)
+        w[i] = 1.;
+      w.compress(VectorOperation::insert);
+      return w;
     }
 
     CriticalPoint
@@ -68,6 +177,94 @@ namespace pneuma
       model.reject_step(t_old);
       c.time    = 0.5 * (lo + hi);
       c.bracket = hi - lo;
+      return c;
+    }
+
+    CriticalPoint
+    StaticLoadPath::locate_on_path(Model                 &model,
+                                   PathConstraintProblem &problem,
+                                   const BorderedVector  &last,
+                                   const BorderedVector  &increment,
+                                   const double           size,
+                                   const LA::Vector      &w,
+                                   const long long        before,
+                                   const long long        after)
+    {
+      // Probes solve the constraint of a smaller size from the last
+      // accepted state, predicted along the accepted increment; each is
+      // judged and rejected.
+      const ConditionalOStream quiet(std::cout, false);
+      const double             t_old = PathConstraintProblem::load_factor(last);
+      const auto               monitor = [&](const BorderedVector &x) {
+        return w.size() > 0 ? w * x.field
+                                          : std::numeric_limits<double>::quiet_NaN();
+      };
+      struct Probe
+      {
+        double r, tau, m;
+      };
+      BorderedVector end(last);
+      end.add(1., increment);
+      std::vector<Probe> probes = {{0., t_old, monitor(last)},
+                                   {size,
+                                    PathConstraintProblem::load_factor(end),
+                                    monitor(end)}};
+      CriticalPoint      c;
+      c.before  = before;
+      c.after   = after;
+      double lo = 0., hi = size;
+      while (std::abs(hi - lo) > locate_tolerance * std::abs(size)
+             && c.probes < 40)
+        {
+          const double mid = 0.5 * (lo + hi);
+          model.reject_step(t_old);
+          BorderedVector x(last);
+          x.add(mid / size, increment);
+          BorderedVector    state      = PathConstraintProblem::model_part(x);
+          const double      tau        = PathConstraintProblem::load_factor(x);
+          const std::string impossible = model.begin_step(tau, state);
+          ++c.probes;
+          if (!impossible.empty())
+            break;
+          x = PathConstraintProblem::extend(state, tau);
+          problem.set_size(mid);
+          const auto newton = newton_solver.solve(problem, x, quiet, false);
+          const BorderedVector probe = PathConstraintProblem::model_part(x);
+          if (!newton.converged || !model.check_state(probe).empty())
+            break;
+          const StabilityReport r = stability_judge(probe);
+          if (!r.computed)
+            break;
+          probes.push_back(
+            {mid, PathConstraintProblem::load_factor(x), monitor(x)});
+          (r.negative == before ? lo : hi) = mid;
+        }
+      problem.set_size(size);
+      model.reject_step(t_old);
+      std::sort(probes.begin(), probes.end(), [](const auto &a, const auto &b) {
+        return a.r < b.r;
+      });
+      // The bracket [lo, hi] and its neighbours: the load factor rises
+      // towards the bracket on one side and falls away on the other at a
+      // limit point.
+      unsigned int i_lo = 0, i_hi = probes.size() - 1;
+      for (unsigned int i = 0; i < probes.size(); ++i)
+        {
+          if (probes[i].r == lo)
+            i_lo = i;
+          if (probes[i].r == hi)
+            i_hi = i;
+        }
+      const Probe &a = probes[i_lo], &b = probes[i_hi];
+      c.time    = 0.5 * (a.tau + b.tau);
+      c.monitor = 0.5 * (a.m + b.m);
+      c.bracket = std::abs(b.tau - a.tau);
+      if (i_lo > 0 && i_hi + 1 < probes.size())
+        {
+          const double left  = probes[i_lo].tau - probes[i_lo - 1].tau;
+          const double right = probes[i_hi + 1].tau - probes[i_hi].tau;
+          c.type = left * right < 0. ? "limit point" : "bifurcation";
+        }
       return c;
     }
 
@@ -135,7 +332,50 @@ namespace pneuma
         current.critical_points = result.critical_points;
       };
 
-      while (!stepping.finished(t))
+      // Path following (solvers/path_following.h): the bordered problem,
+      // the monitor, the last accepted increment (the secant predictor)
+      // and a step forced to end a stage exactly.
+      PathConstraintProblem problem(model, 1e-6 * stepping.end_time());
+      const LA::Vector      w =
+        follows_path() ? monitor_functional(model) : LA::Vector();
+      const auto monitor = [&](const LA::Vector &field) {
+        return w.size() > 0 ? w * field
+                            : std::numeric_limits<double>::quiet_NaN();
+      };
+      const double   psi2 = constraint_name == "spherical" ? 1. : 0.;
+      BorderedVector previous_increment;
+      enum class Forced
+      {
+        none,
+        to_stage_end,
+        to_target
+      } forced       = Forced::none;
+      bool path_done = false;
+
+      // What the path-controlled stages need, checked before any step.
+      for (unsigned int stage = 0; stage < stepping.n_stages(); ++stage)
+        if (control_of(stage) != Control::load)
+          {
+            check_input(
+              !model.prescribed_values_change(stepping.stage_start(stage),
+                                              stepping.stage_end(stage)),
+              "Load stepping/Control",
+              "stage " + std::to_string(stage + 1)
+                + " is path-controlled, but prescribed "
+                  "displacements change in it: give them "
+                  "their own load-controlled stage");
+            check_input(control_of(stage) == Control::arc_length
+                          || w.size() > 0,
+                        "Load stepping/Path following/Monitor point",
+                        "displacement control needs a monitor point "
+                        "(Output/Monitor points)");
+          }
+      check_input(!has_target || w.size() > 0,
+                  "Load stepping/Path following/Monitor point",
+                  "a target monitor value needs a monitor point "
+                  "(Output/Monitor points)");
+
+      while (!path_done && (current.path_active || !stepping.finished(t)))
         {
           // A signal stops the path between steps, or inside Newton
           // (below), with the last converged state.
@@ -148,27 +388,171 @@ namespace pneuma
                                + std::to_string(t) + ") is written.";
               break;
             }
-          // 1. Prepare the step from the last converged state.
-          const double t_old = t, t_new = stepping.next_time(t_old, dt);
-          last = result.state;
-          out << "Step " << result.steps + 1 << "  t = " << t_new
-              << "  dt = " << t_new - t_old << std::endl;
-          const std::string impossible = model.begin_step(t_new, result.state);
-          if (!impossible.empty())
+          const unsigned int stage =
+            current.path_active ? current.path_stage : stepping.stage_of(t);
+          const Control control = control_of(stage);
+          const double  t_old   = t;
+          last                  = result.state;
+
+          // Entering a path-controlled stage: its scales from the path's
+          // tangent at the converged state.
+          BorderedVector tangent;
+          if (control != Control::load && !current.path_active)
             {
-              result.exit_code = 2;
-              result.message   = impossible + ". The last converged state (t = "
-                               + std::to_string(t_old) + ") is written.";
-              result.state = last;
-              model.reject_step(t_old);
-              break;
+              const std::string entry = "Load stepping/Control";
+              const std::string name  = "stage " + std::to_string(stage + 1);
+              BorderedVector    state(result.state);
+              model.begin_step(t, state);
+              double force_rate = 0.;
+              tangent = problem.tangent(PathConstraintProblem::extend(state, t),
+                                        force_rate);
+              model.reject_step(t);
+              check_input(force_rate > 0.,
+                          entry,
+                          name
+                            + " is path-controlled, but no load changes "
+                              "in it (no load curve varies over its "
+                              "pseudo times)");
+              current.u_scale = tangent.field.l2_norm();
+              check_input(current.u_scale > 0.
+                            && std::isfinite(current.u_scale),
+                          entry,
+                          name
+                            + ": the loads that change in it do not move "
+                              "the structure");
+              current.force_scale  = force_rate;
+              current.monitor_rate = monitor(tangent.field);
+              check_input(control != Control::displacement
+                            || std::abs(current.monitor_rate)
+                                 > 1e-9 * current.u_scale,
+                          entry,
+                          name
+                            + " is under displacement control, but the "
+                              "monitored component does not move with "
+                              "its loads");
+              current.path_active        = true;
+              current.path_stage         = stage;
+              current.arc_length         = 0.;
+              current.path_steps         = 0;
+              current.last_dtau          = 0.;
+              current.limit_since_return = false;
+              previous_increment         = BorderedVector();
+              forced                     = Forced::none;
+              dt                         = stepping.initial();
+              out << "Stage " << stage + 1 << " under "
+                  << control_names[controls.size() == 1 ? 0 : stage]
+                  << " control: |du/dt| = " << current.u_scale
+                  << ", |dR/dt| = " << force_rate << std::endl;
             }
 
-          // 2. Solve, and check that the state is admissible.
-          auto newton = newton_solver.solve(model,
-                                            result.state,
-                                            out,
-                                            last.field.linfty_norm() == 0.);
+          const bool path_step =
+            control != Control::load && forced != Forced::to_stage_end;
+          double         t_new = 0.;
+          NewtonResult   newton;
+          BorderedVector x_last, x, predictor;
+          double         size = 0.;
+          if (!path_step)
+            {
+              // 1. Prepare the load step from the last converged state.
+              t_new = forced == Forced::to_stage_end
+                        ? stepping.stage_end(stage)
+                        : stepping.next_time(t_old, dt);
+              out << "Step " << result.steps + 1 << "  t = " << t_new
+                  << "  dt = " << t_new - t_old << std::endl;
+              const std::string impossible =
+                model.begin_step(t_new, result.state);
+              if (!impossible.empty())
+                {
+                  result.exit_code = 2;
+                  result.message   = impossible
+                                   + ". The last converged state (t = "
+                                   + std::to_string(t_old) + ") is written.";
+                  result.state = last;
+                  model.reject_step(t_old);
+                  break;
+                }
+              // 2. Solve.
+              newton = newton_solver.solve(model,
+                                           result.state,
+                                           out,
+                                           last.field.linfty_norm() == 0.);
+            }
+          else
+            {
+              // 1. The predictor: along the path's tangent at the start
+              //    of the stage (or after a restart), else the secant (the
+              //    last accepted increment), scaled to the constraint.
+              x_last = PathConstraintProblem::extend(result.state, t_old);
+              problem.set_arc_length(
+                x_last, dt, current.u_scale, psi2, current.force_scale);
+              const bool by_displacement =
+                control == Control::displacement || forced == Forced::to_target;
+              BorderedVector direction;
+              if (previous_increment.field.size() > 0)
+                direction = previous_increment;
+              else
+                {
+                  if (tangent.field.size() == 0)
+                    {
+                      BorderedVector state(result.state);
+                      model.begin_step(t_old, state);
+                      double force_rate = 0.;
+                      tangent =
+                        problem.tangent(PathConstraintProblem::extend(state,
+                                                                      t_old),
+                                        force_rate);
+                      model.reject_step(t_old);
+                    }
+                  direction = PathConstraintProblem::extend(tangent, 1.);
+                  if (current.last_dtau < 0.)
+                    direction *= -1.;
+                }
+              double factor = 0.;
+              if (by_displacement)
+                {
+                  const double sign =
+                    has_target
+                      ? (target >= monitor(result.state.field) ? 1. : -1.)
+                      : (current.monitor_rate >= 0. ? 1. : -1.);
+                  size               = forced == Forced::to_target
+                                         ? target - monitor(result.state.field)
+                                         : sign * dt * std::abs(current.monitor_rate);
+                  const double along = monitor(direction.field);
+                  factor             = along != 0. ? size / along : 0.;
+                  problem.set_displacement(x_last,
+                                           w,
+                                           size,
+                                           std::abs(current.monitor_rate),
+                                           current.force_scale);
+                }
+              else
+                {
+                  size   = dt;
+                  factor = dt / std::max(problem.arc_length(direction), 1e-300);
+                }
+              x = x_last;
+              x.add(factor, direction);
+              predictor = x;
+              t_new     = PathConstraintProblem::load_factor(x);
+              out << "Step " << result.steps + 1 << "  "
+                  << (by_displacement ? "monitor increment " : "arc length ")
+                  << size << "  predicted t = " << t_new << std::endl;
+              BorderedVector    state = PathConstraintProblem::model_part(x);
+              const std::string impossible = model.begin_step(t_new, state);
+              if (!impossible.empty())
+                {
+                  newton.converged      = false;
+                  newton.failure_reason = impossible;
+                }
+              else
+                {
+                  x = PathConstraintProblem::extend(state, t_new);
+                  // 2. Solve the bordered system.
+                  newton       = newton_solver.solve(problem, x, out, false);
+                  result.state = PathConstraintProblem::model_part(x);
+                  t_new        = PathConstraintProblem::load_factor(x);
+                }
+            }
           result.newton_iterations += newton.iterations;
           if (newton.converged)
             {
@@ -179,10 +563,50 @@ namespace pneuma
                   newton.failure_reason = reason;
                 }
             }
+          // A path step must go on along the path, and stops where its
+          // stage ends: at the stage's end time or at the target (a step
+          // that passes one is taken again to end there exactly).
+          if (newton.converged && path_step)
+            {
+              BorderedVector step(x);
+              step -= x_last;
+              const double m_old = monitor(last.field),
+                           m_new = monitor(result.state.field);
+              if (previous_increment.field.size() > 0
+                  && problem.dot(step, previous_increment) < 0.)
+                {
+                  newton.converged      = false;
+                  newton.failure_reason = "the step turned back along the path";
+                }
+              else if (t_new > stepping.stage_end(stage)
+                                 + 1e-12 * stepping.end_time())
+                {
+                  forced       = Forced::to_stage_end;
+                  result.state = last;
+                  model.reject_step(t_old);
+                  out << "  past the stage's end (t = " << t_new
+                      << "): the step is taken again to t = "
+                      << stepping.stage_end(stage) << std::endl;
+                  continue;
+                }
+              else if (has_target && forced != Forced::to_target
+                       && stage + 1 == stepping.n_stages()
+                       && (m_new - target) * (m_old - target) < 0.)
+                {
+                  forced       = Forced::to_target;
+                  result.state = last;
+                  model.reject_step(t_old);
+                  out << "  past the target (monitor " << m_new
+                      << "): the step is taken again to " << target
+                      << std::endl;
+                  continue;
+                }
+            }
 
           // The stability of the converged state, before it is committed;
           // a change of the count is located between the two states.
           StabilityReport stability;
+          bool            limit_located = false;
           if (newton.converged && stability_judge)
             {
               stability = stability_judge(result.state);
@@ -192,22 +616,48 @@ namespace pneuma
                   && stability.negative != previous_stability.negative)
                 {
                   const BorderedVector accepted(result.state);
-                  CriticalPoint        c = locate(model,
-                                           last,
-                                           t_old,
-                                           t_new,
-                                           previous_stability.negative,
-                                           stability.negative);
-                  c.step                 = result.steps + 1;
+                  CriticalPoint        c;
+                  if (path_step)
+                    {
+                      BorderedVector increment(x);
+                      increment -= x_last;
+                      c             = locate_on_path(model,
+                                         problem,
+                                         x_last,
+                                         increment,
+                                         size,
+                                         w,
+                                         previous_stability.negative,
+                                         stability.negative);
+                      limit_located = c.type == "limit point";
+                    }
+                  else
+                    {
+                      c         = locate(model,
+                                 last,
+                                 t_old,
+                                 t_new,
+                                 previous_stability.negative,
+                                 stability.negative);
+                      c.monitor = monitor(result.state.field);
+                    }
+                  c.step = result.steps + 1;
                   // Back to the accepted state: prepare the step exactly
-                  // as before the probes (from the last state: the same
-                  // prescribed values, contact candidates and border
-                  // scales that the accepted state was solved with), then
-                  // judge it again (an assembly at it: its friction state).
-                  BorderedVector again(last);
-                  model.begin_step(t_new, again);
-                  result.state = accepted;
-                  stability    = stability_judge(result.state);
+                  // as before the probes (the same prescribed values,
+                  // contact candidates and border scales that the
+                  // accepted state was solved with), then judge it again
+                  // (an assembly at it: its friction state).
+                  BorderedVector again =
+                    path_step ? PathConstraintProblem::model_part(predictor)
+                              : last;
+                  model.begin_step(path_step
+                                     ? PathConstraintProblem::load_factor(
+                                       predictor)
+                                     : t_new,
+                                   again);
+                  result.state       = accepted;
+                  model.current_time = t_new;
+                  stability          = stability_judge(result.state);
                   out << "  critical point: " << c.type << " at t = " << c.time
                       << " (+-" << 0.5 * c.bracket << "), negative eigenvalues "
                       << c.before << " -> " << c.after << ", " << c.probes
@@ -228,9 +678,18 @@ namespace pneuma
               ++result.cutbacks;
               result.state = last;
               model.reject_step(t_old);
-              dt = stepping.cut(t_new - t_old);
+              const double tried = path_step ? dt : t_new - t_old;
+              if (forced != Forced::none)
+                {
+                  // The exact end could not be reached from here: go on
+                  // along the path with a shorter step.
+                  forced = Forced::none;
+                }
+              dt = stepping.cut(tried);
               out << "  Newton failed (" << newton.failure_reason
-                  << "); cutting back to dt = " << dt << std::endl;
+                  << "); cutting back to "
+                  << (control != Control::load ? "a step of " : "dt = ") << dt
+                  << std::endl;
               if (dt < stepping.minimum())
                 {
                   std::ostringstream msg;
@@ -238,12 +697,14 @@ namespace pneuma
                       << " even with the minimum increment "
                       << stepping.minimum() << " (" << newton.failure_reason
                       << ")";
-                  if (stiffness < limit_point_stiffness)
+                  if (stiffness < limit_point_stiffness
+                      && control == Control::load)
                     msg << "; a limit point was reached: the current "
                            "stiffness parameter fell to "
                         << stiffness
                         << ", so the load cannot grow further under load "
-                           "control (use volume or gas-amount control)";
+                           "control (use Load stepping/Control = arc-length, "
+                           "or volume or gas-amount control)";
                   msg << ". The last converged state (t = " << t_old
                       << ") is written.";
                   result.exit_code = 2;
@@ -259,35 +720,134 @@ namespace pneuma
             previous_stability = stability;
           t = t_new;
           ++result.steps;
+          model.current_time = t_new;
           model.commit_step(t_new, result.state);
           result.step_iterations.push_back(newton.iterations);
           result.last_residual_history = newton.residual_history;
+          result.residual_histories.push_back(newton.residual_history);
           LA::Vector increment(result.state.field);
           increment -= last.field;
           const double ratio =
-            (t_new - t_old) / std::max(increment.l2_norm(), 1e-300);
-          const unsigned int stage = stepping.stage_of(t_old);
+            std::abs(t_new - t_old) / std::max(increment.l2_norm(), 1e-300);
           if (stage != stiffness_stage)
             {
               stiffness_stage     = stage;
               stiffness_reference = ratio;
             }
-          stiffness = ratio / stiffness_reference;
+          stiffness           = ratio / stiffness_reference;
+          double     step_arc = 0.;
+          const auto reached  = forced;
+          forced              = Forced::none;
+          if (current.path_active)
+            {
+              // The path's record: the secant, the arc length, and the
+              // load factor turning back (a limit point, if no stability
+              // check located it).
+              BorderedVector step =
+                PathConstraintProblem::extend(result.state, t_new);
+              step -= PathConstraintProblem::extend(last, t_old);
+              problem.set_arc_length(
+                x_last, dt, current.u_scale, psi2, current.force_scale);
+              step_arc = problem.arc_length(step);
+              current.arc_length += step_arc;
+              ++current.path_steps;
+              const double dtau = t_new - t_old;
+              if (limit_located)
+                current.limit_since_return = true;
+              if (current.last_dtau * dtau < 0.)
+                {
+                  if (!current.limit_since_return)
+                    {
+                      CriticalPoint c;
+                      c.type    = "limit point";
+                      c.step    = result.steps;
+                      c.time    = std::max(t_old, t_new);
+                      c.bracket = std::abs(dtau);
+                      c.monitor = monitor(last.field);
+                      c.before = c.after = previous_stability.negative;
+                      result.critical_points.push_back(c);
+                      out << "  limit point: the load factor turned back "
+                             "near t = "
+                          << t_old << std::endl;
+                    }
+                  current.limit_since_return = false;
+                }
+              if (dtau != 0.)
+                current.last_dtau = dtau;
+              if (reached == Forced::none)
+                previous_increment = step;
+            }
           out << "  converged in " << newton.iterations << " iterations ("
               << newton.convergence_test << "), wall " << std::fixed
               << std::setprecision(2) << wall_clock.wall_time() << " s"
               << std::defaultfloat << std::setprecision(6) << std::endl;
-          dt = stepping.grown(t_new - t_old, newton.iterations);
+          dt =
+            stepping.grown(path_step ? dt : t_new - t_old, newton.iterations);
+          PathStep report{result.steps,
+                          t_new,
+                          newton.iterations,
+                          newton.convergence_test,
+                          stiffness,
+                          stability};
+          report.load_factor =
+            (t_new - stepping.stage_start(stage))
+            / (stepping.stage_end(stage) - stepping.stage_start(stage));
+          report.arc_length = current.path_active ? current.arc_length : 0.;
+          // Where a path-controlled stage ends.
+          std::string end_message;
+          if (current.path_active)
+            {
+              if (reached == Forced::to_stage_end)
+                {
+                  current.path_active = false;
+                  previous_increment  = BorderedVector();
+                  dt                  = stepping.initial();
+                }
+              else if (reached == Forced::to_target)
+                {
+                  path_done   = true;
+                  end_message = "the monitored displacement reached its "
+                                "target "
+                                + std::to_string(target);
+                }
+              else if (stop_at_critical && !result.critical_points.empty()
+                       && result.critical_points.back().step == result.steps)
+                {
+                  path_done = true;
+                  end_message =
+                    "stopped at the first critical point (a "
+                    + result.critical_points.back().type + " at t = "
+                    + std::to_string(result.critical_points.back().time)
+                    + ") as asked (Load stepping/Path following/Stop at "
+                      "critical point)";
+                }
+              else if (current.path_steps >= max_path_steps)
+                {
+                  result.exit_code = 2;
+                  std::ostringstream msg;
+                  msg << "stage " << stage + 1 << " did not reach its end ("
+                      << (has_target && stage + 1 == stepping.n_stages()
+                            ? "the target monitor value "
+                                + std::to_string(target) + " or "
+                            : std::string())
+                      << "t = " << stepping.stage_end(stage) << ") in "
+                      << max_path_steps
+                      << " steps (Load stepping/Path following/Maximum "
+                         "steps); the load factor is at t = "
+                      << t_new << ". The last converged state is written.";
+                  end_message = msg.str();
+                  path_done   = true;
+                }
+            }
           snapshot();
-          observer(PathStep{result.steps,
-                            t_new,
-                            newton.iterations,
-                            newton.convergence_test,
-                            stiffness,
-                            stability},
-                   result.state);
+          observer(report, result.state);
+          if (path_done)
+            {
+              result.message = end_message;
+              break;
+            }
           if (stop_step > 0 && result.steps >= stop_step
-              && !stepping.finished(t))
+              && (current.path_active || !stepping.finished(t)))
             {
               result.message = "stopped after step "
                                + std::to_string(result.steps)

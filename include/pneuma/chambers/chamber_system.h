@@ -84,6 +84,15 @@ namespace pneuma
       std::string
       begin_step(const LA::Vector &u, const double t);
 
+      /// The pseudo time of the targets (prescribed pressure, volume,
+      /// gas amount, liquid volume) in evaluate(): begin_step() sets it,
+      /// an assembly at another time (path following) moves it.
+      void
+      set_time(const double t)
+      {
+        time = t;
+      }
+
       /// The scaled border for Newton.
       Vector<double>
       pack() const;

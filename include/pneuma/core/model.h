@@ -287,14 +287,49 @@ namespace pneuma
     double current_time = 0.;
 
     /**
+     * The residual alone at @p u and pseudo time @p t (path following
+     * differentiates it in t): no tangent; the tangent, the border blocks
+     * and the applied loads of the last assemble() are kept.
+     */
+    void
+    assemble_residual(const solvers::BorderedVector &u,
+                      const double                   t,
+                      solvers::BorderedVector       &residual);
+    /// Solve J du = rhs again with the factorization of the last
+    /// solve_linear() (another right-hand side, no factorization).
+    void
+    solve_again(const solvers::BorderedVector &rhs,
+                solvers::BorderedVector       &du);
+    /// True if some prescribed value (supports, rigid plates, cable ends)
+    /// differs between pseudo times @p t0 and @p t1.
+    bool
+    prescribed_values_change(const double t0, const double t1) const;
+
+    /**
      * Compare the assembled tangent at @p state plus a smooth perturbation
      * of size @p amplitude with central finite differences of the residual
-     * (step @p h) at pseudo time @p t, on admissible states.
+     * (step @p h) at pseudo time @p t, on admissible states. With
+     * @p path_constraint, the Jacobian of the system bordered by the
+     * spherical arc-length constraint (solvers/path_following.h), the
+     * load factor included.
      */
     TangentCheck
-    check_tangent(const double t, const double amplitude, const double h);
+    check_tangent(const double t,
+                  const double amplitude,
+                  const double h,
+                  const bool   path_constraint = false);
 
   private:
+    /// One assembly pass at @p u and pseudo time @p t into @p residual,
+    /// the tangent @p K and the applied loads @p f_ext (either may be
+    /// nullptr) and the border blocks @p border.
+    void
+    assemble_into(const solvers::BorderedVector &u,
+                  const double                   t,
+                  solvers::BorderedVector       &residual,
+                  LA::SparseMatrix              *K,
+                  LA::Vector                    *f_ext,
+                  solvers::BorderCoupling       &border);
     /// Dependent dofs (plates, ties, hanging nodes) follow their masters.
     void
     apply_kinematic_constraints(LA::Vector &field);
@@ -316,8 +351,10 @@ namespace pneuma
     LA::SparseMatrix                  tangent, laplacian;
     LA::Vector                        external, ghosted;
     solvers::BorderCoupling           coupling;
-    unsigned int                      linear_solves = 0;
-    std::string                       restart;
+    /// Border blocks of assemble_residual(), thrown away.
+    solvers::BorderCoupling scratch_coupling;
+    unsigned int            linear_solves = 0;
+    std::string             restart;
     /// Solver counts at the last commit_step() (for checkpoints).
     std::vector<unsigned int> committed_counts = {0, 0, 0};
   };

@@ -44,6 +44,8 @@ namespace pneuma
     /// step's iterations.
     std::vector<unsigned int> step_iterations;
     std::vector<double>       last_residual_history;
+    /// |r| of every converged step's Newton iterations.
+    std::vector<std::vector<double>> residual_histories;
     /// Adaptive refinement: the summary row of every cycle.
     std::vector<Statistics> cycles;
 
@@ -90,10 +92,15 @@ namespace pneuma
     /**
      * Compare the assembled tangent at a smooth perturbation of size
      * @p amplitude with central finite differences of the residual (step
-     * @p h), at pseudo time @p t; returns {relative error, |K d|}.
+     * @p h), at pseudo time @p t; returns {relative error, |K d|}. With
+     * @p path_constraint, the Jacobian bordered by the arc-length
+     * constraint with the load factor as unknown.
      */
     std::pair<double, double>
-    check_tangent(const double t, const double amplitude, const double h);
+    check_tangent(const double t,
+                  const double amplitude,
+                  const double h,
+                  const bool   path_constraint = false);
 
   private:
     class Impl;

@@ -183,6 +183,19 @@ namespace pneuma
       {
         return fe_degree;
       }
+      /// Number of monitor points (Output/Monitor points).
+      unsigned int
+      n_monitor_points() const
+      {
+        return monitor_dofs.size();
+      }
+      /// Global index of displacement component @p c of monitor point
+      /// @p m on the one rank that reports it; invalid on the others.
+      types::global_dof_index
+      monitor_dof(const unsigned int m, const unsigned int c) const
+      {
+        return monitor_dofs[m][c];
+      }
       /// The material ids of the mesh (every rank).
       const std::set<types::material_id> &
       material_ids() const

@@ -24,6 +24,7 @@
 #include <pneuma/solvers/bordered_vector.h>
 #include <pneuma/solvers/load_stepping.h>
 #include <pneuma/solvers/newton_solver.h>
+#include <pneuma/solvers/path_following.h>
 #include <pneuma/solvers/stability.h>
 
 #include <functional>
@@ -47,13 +48,21 @@ namespace pneuma
       double stiffness_parameter = 1.;
       /// The stability of the state (computed: false if not judged).
       StabilityReport stability;
+      /// The load factor within the stage, (t - t_start)/(t_end - t_start),
+      /// and the arc length travelled in a path-controlled stage.
+      double load_factor = 0., arc_length = 0.;
     };
 
     /**
-     * A change of the negative-eigenvalue count between two converged
-     * states, located by bisection in pseudo time. Under load control the
-     * control parameter grows through it, so it is a bifurcation point (a
-     * limit point of the control cannot be passed by load control).
+     * A critical point: a change of the negative-eigenvalue count between
+     * two converged states, located by bisection in pseudo time (load
+     * control) or in the arc length (path following). Under load control
+     * the load grows through it, so it is a bifurcation point (a limit
+     * point cannot be passed by load control); on a followed path it is a
+     * limit point where the load factor has an extremum there, a
+     * bifurcation point where it has not. A limit point found only by the
+     * load factor turning back (no stability check) is not located: its
+     * bracket is the step.
      */
     struct CriticalPoint
     {
@@ -63,12 +72,15 @@ namespace pneuma
       long long    before = 0, after = 0; ///< the counts on both sides
       unsigned int probes = 0;            ///< Newton solves of the bisection
       std::string  type   = "bifurcation";
+      /// The monitored component (Load stepping/Path following) there; NaN
+      /// without a monitor.
+      double monitor = 0.;
 
       template <class Archive>
       void
       serialize(Archive &ar, const unsigned int)
       {
-        ar &step &time &bracket &before &after &probes &type;
+        ar &step &time &bracket &before &after &probes &type &monitor;
       }
     };
 
@@ -87,6 +99,17 @@ namespace pneuma
       long long negative_eigenvalues = -1;
       /// The critical points passed so far.
       std::vector<CriticalPoint> critical_points;
+      /// Path following: in a path-controlled stage (and which), its
+      /// scales (|du/dtau|, |dR/dtau|, the monitor's rate at the stage's
+      /// start), the arc length travelled, its steps, the last change of
+      /// the load factor, and whether a limit point was reported since the
+      /// load factor last turned.
+      bool         path_active = false;
+      unsigned int path_stage  = 0;
+      double       u_scale = 1., force_scale = 1., monitor_rate = 1.;
+      double       arc_length = 0., last_dtau = 0.;
+      unsigned int path_steps         = 0;
+      bool         limit_since_return = false;
 
       template <class Archive>
       void
@@ -96,6 +119,8 @@ namespace pneuma
         ar &stiffness_reference &stiffness       &stiffness_stage;
         ar &stiffness_stage_set &step_iterations &last_residual_history;
         ar &negative_eigenvalues                 &critical_points;
+        ar &path_active &path_stage &u_scale &force_scale &monitor_rate;
+        ar &arc_length &last_dtau &path_steps             &limit_since_return;
       }
     };
 
@@ -110,6 +135,9 @@ namespace pneuma
       std::vector<unsigned int> step_iterations;
       /// |r| of the last converged step's Newton iterations.
       std::vector<double> last_residual_history;
+      /// |r| of every converged step's Newton iterations (this run, not
+      /// kept across a restart).
+      std::vector<std::vector<double>> residual_histories;
       /// The last converged state.
       BorderedVector state;
       /// Critical points passed (located if a tolerance is set).
@@ -176,9 +204,35 @@ namespace pneuma
         return newton_solver;
       }
 
+      /// True if some stage is under arc-length or displacement control.
+      bool
+      follows_path() const;
+
     private:
       LoadStepping stepping;
       NewtonSolver newton_solver;
+      /// "Load stepping/Control", one per stage (or one for all), and
+      /// "Load stepping/Path following".
+      std::vector<std::string> control_names{"load"};
+      std::vector<Control>     controls{Control::load};
+      std::string              constraint_name   = "cylindrical";
+      unsigned int             monitor_point     = 0;
+      std::string              monitor_component = "z";
+      std::string              target_text;
+      double                   target           = 0.;
+      bool                     has_target       = false;
+      unsigned int             max_path_steps   = 200;
+      bool                     stop_at_critical = false;
+
+      Control
+      control_of(const unsigned int stage) const
+      {
+        return controls.size() == 1 ? controls[0] : controls[stage];
+      }
+      /// The monitor functional w (w . u is the monitored component), or
+      /// an empty vector without a monitor point.
+      LA::Vector
+                   monitor_functional(const Model &model) const;
       PathState    current;
       unsigned int stop_step = 0;
       Judge        stability_judge;
@@ -195,6 +249,23 @@ namespace pneuma
              const double          t_new,
              const long long       before,
              const long long       after);
+
+      /**
+       * Bisect the path-controlled step from the converged @p last
+       * (extended) along @p increment (the accepted step, of constraint
+       * size @p size: arc length, or the monitor's change) for the change
+       * of the count from @p before to @p after; a limit point where the
+       * load factor has its extremum in the final bracket.
+       */
+      CriticalPoint
+      locate_on_path(Model                 &model,
+                     PathConstraintProblem &problem,
+                     const BorderedVector  &last,
+                     const BorderedVector  &increment,
+                     const double           size,
+                     const LA::Vector      &w,
+                     const long long        before,
+                     const long long        after);
     };
   } // namespace solvers
 } // namespace pneuma

@@ -36,6 +36,23 @@ namespace pneuma
       {
         return stage_ends.back();
       }
+      /// Number of stages.
+      unsigned int
+      n_stages() const
+      {
+        return stage_ends.size();
+      }
+      /// Start and end of stage @p s.
+      double
+      stage_start(const unsigned int s) const
+      {
+        return s == 0 ? 0. : stage_ends[s - 1];
+      }
+      double
+      stage_end(const unsigned int s) const
+      {
+        return stage_ends[s];
+      }
       /// Index of the stage that contains (t, t + epsilon].
       unsigned int
       stage_of(const double t) const;
