@@ -523,6 +523,19 @@ namespace pneuma
     update_constraints.distribute(du.field);
   }
 
+  void
+  Model::vmult(const solvers::BorderedVector &x,
+               solvers::BorderedVector       &y) const
+  {
+    if (n_border() == 0)
+      {
+        tangent.vmult(y.field, x.field);
+        y.border.reinit(0);
+      }
+    else
+      coupling.vmult(tangent, x, y);
+  }
+
   bool
   Model::prescribed_values_change(const double t0, const double t1) const
   {
@@ -732,6 +745,29 @@ namespace pneuma
           }
       }
 
+    // Central differences of a problem's residual along d (its dependent
+    // dofs distributed) against J d.
+    const auto compare = [&](solvers::NonlinearProblem     &problem,
+                             const solvers::BorderedVector &x,
+                             const solvers::BorderedVector &d,
+                             const solvers::BorderedVector &Jd) {
+      solvers::BorderedVector full(d), xp(x), xm(x), rp(x), rm(x);
+      update_constraints.distribute(full.field);
+      xp.add(h, full);
+      xm.add(-h, full);
+      problem.assemble(xp, rp);
+      problem.assemble(xm, rm);
+      rp -= rm;
+      rp *= 1. / (2. * h);
+      TangentCheck check;
+      check.tangent_norm = Jd.l2_norm();
+      rp -= Jd;
+      check.relative_error =
+        rp.l2_norm() / std::max(check.tangent_norm, 1e-300);
+      return check;
+    };
+
+    solvers::BorderedVector r(u), Jd(u);
     if (path_constraint)
       {
         // The bordered system about a centre off the state, with the load
@@ -742,56 +778,18 @@ namespace pneuma
         for (const auto i : owned)
           center.field[i] -= 0.3 * amplitude * std::sin(0.53 * i + 0.2);
         center.field.compress(VectorOperation::insert);
+        problem.set_scales(std::max(u.field.l2_norm(), 1e-300), 1., 1e3, 1.);
+        problem.set_constraint(solvers::Control::arc_length,
+                               P::extend(center, t - 0.05),
+                               0.1);
         const auto x = P::extend(u, t);
-        problem.set_arc_length(P::extend(center, t - 0.05),
-                               0.1,
-                               std::max(u.field.l2_norm(), 1e-300),
-                               1.,
-                               1e3);
-        auto                    d = P::extend(direction, 0.3);
-        solvers::BorderedVector r, rp, rm, Jd;
+        const auto d = P::extend(direction, 0.3);
         problem.assemble(x, r);
         problem.vmult(d, Jd);
-        auto full = d;
-        update_constraints.distribute(full.field);
-        auto xp = x;
-        xp.add(h, full);
-        auto xm = x;
-        xm.add(-h, full);
-        problem.assemble(xp, rp);
-        problem.assemble(xm, rm);
-        rp -= rm;
-        rp *= 1. / (2. * h);
-        TangentCheck check;
-        check.tangent_norm = Jd.l2_norm();
-        rp -= Jd;
-        check.relative_error =
-          rp.l2_norm() / std::max(check.tangent_norm, 1e-300);
-        return check;
+        return compare(problem, x, d, Jd);
       }
-
-    solvers::BorderedVector r(u), r_plus(u), r_minus(u), Kd(u), fd(u);
     assemble(u, r);
-    if (n_border() == 0)
-      tangent.vmult(Kd.field, direction.field);
-    else
-      coupling.vmult(tangent, direction, Kd);
-
-    solvers::BorderedVector full(direction);
-    update_constraints.distribute(full.field);
-    solvers::BorderedVector up(u);
-    up.add(h, full);
-    assemble(up, r_plus);
-    solvers::BorderedVector um(u);
-    um.add(-h, full);
-    assemble(um, r_minus);
-    fd = r_plus;
-    fd -= r_minus;
-    fd *= 1. / (2. * h);
-    TangentCheck check;
-    check.tangent_norm = Kd.l2_norm();
-    fd -= Kd;
-    check.relative_error = fd.l2_norm() / std::max(check.tangent_norm, 1e-300);
-    return check;
+    vmult(direction, Jd);
+    return compare(*this, u, direction, Jd);
   }
 } // namespace pneuma

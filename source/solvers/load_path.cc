@@ -21,6 +21,14 @@ namespace pneuma
       /// as a limit point (the tangent stiffness along the path has fallen
       /// to a tenth of the stage's first step).
       constexpr double limit_point_stiffness = 0.1;
+
+      /// The monitored component w . u, or NaN without a monitor.
+      double
+      monitor_value(const LA::Vector &w, const LA::Vector &field)
+      {
+        return w.size() > 0 ? w * field
+                            : std::numeric_limits<double>::quiet_NaN();
+      }
     } // namespace
 
     void
@@ -196,8 +204,7 @@ namespace pneuma
       const ConditionalOStream quiet(std::cout, false);
       const double             t_old = PathConstraintProblem::load_factor(last);
       const auto               monitor = [&](const BorderedVector &x) {
-        return w.size() > 0 ? w * x.field
-                                          : std::numeric_limits<double>::quiet_NaN();
+        return monitor_value(w, x.field);
       };
       struct Probe
       {
@@ -339,8 +346,17 @@ namespace pneuma
       const LA::Vector      w =
         follows_path() ? monitor_functional(model) : LA::Vector();
       const auto monitor = [&](const LA::Vector &field) {
-        return w.size() > 0 ? w * field
-                            : std::numeric_limits<double>::quiet_NaN();
+        return monitor_value(w, field);
+      };
+      problem.set_monitor(w);
+      // The path's tangent du/dt at the converged state, and |dR/dt|.
+      const auto path_tangent = [&](double &force_rate) {
+        BorderedVector state(result.state);
+        model.begin_step(t, state);
+        const BorderedVector tangent =
+          problem.tangent(PathConstraintProblem::extend(state, t), force_rate);
+        model.reject_step(t);
+        return tangent;
       };
       const double   psi2 = constraint_name == "spherical" ? 1. : 0.;
       BorderedVector previous_increment;
@@ -401,12 +417,8 @@ namespace pneuma
             {
               const std::string entry = "Load stepping/Control";
               const std::string name  = "stage " + std::to_string(stage + 1);
-              BorderedVector    state(result.state);
-              model.begin_step(t, state);
-              double force_rate = 0.;
-              tangent = problem.tangent(PathConstraintProblem::extend(state, t),
-                                        force_rate);
-              model.reject_step(t);
+              double            force_rate = 0.;
+              tangent                      = path_tangent(force_rate);
               check_input(force_rate > 0.,
                           entry,
                           name
@@ -483,8 +495,10 @@ namespace pneuma
               //    of the stage (or after a restart), else the secant (the
               //    last accepted increment), scaled to the constraint.
               x_last = PathConstraintProblem::extend(result.state, t_old);
-              problem.set_arc_length(
-                x_last, dt, current.u_scale, psi2, current.force_scale);
+              problem.set_scales(current.u_scale,
+                                 psi2,
+                                 current.force_scale,
+                                 std::abs(current.monitor_rate));
               const bool by_displacement =
                 control == Control::displacement || forced == Forced::to_target;
               BorderedVector direction;
@@ -492,17 +506,9 @@ namespace pneuma
                 direction = previous_increment;
               else
                 {
+                  double force_rate = 0.;
                   if (tangent.field.size() == 0)
-                    {
-                      BorderedVector state(result.state);
-                      model.begin_step(t_old, state);
-                      double force_rate = 0.;
-                      tangent =
-                        problem.tangent(PathConstraintProblem::extend(state,
-                                                                      t_old),
-                                        force_rate);
-                      model.reject_step(t_old);
-                    }
+                    tangent = path_tangent(force_rate);
                   direction = PathConstraintProblem::extend(tangent, 1.);
                   if (current.last_dtau < 0.)
                     direction *= -1.;
@@ -519,16 +525,13 @@ namespace pneuma
                                          : sign * dt * std::abs(current.monitor_rate);
                   const double along = monitor(direction.field);
                   factor             = along != 0. ? size / along : 0.;
-                  problem.set_displacement(x_last,
-                                           w,
-                                           size,
-                                           std::abs(current.monitor_rate),
-                                           current.force_scale);
+                  problem.set_constraint(Control::displacement, x_last, size);
                 }
               else
                 {
                   size   = dt;
                   factor = dt / std::max(problem.arc_length(direction), 1e-300);
+                  problem.set_constraint(Control::arc_length, x_last, size);
                 }
               x = x_last;
               x.add(factor, direction);
@@ -678,14 +681,12 @@ namespace pneuma
               ++result.cutbacks;
               result.state = last;
               model.reject_step(t_old);
-              const double tried = path_step ? dt : t_new - t_old;
-              if (forced != Forced::none)
-                {
-                  // The exact end could not be reached from here: go on
-                  // along the path with a shorter step.
-                  forced = Forced::none;
-                }
-              dt = stepping.cut(tried);
+              const double tried =
+                control != Control::load ? dt : t_new - t_old;
+              // An exact end that could not be reached from here: go on along
+              // the path with a shorter step.
+              forced = Forced::none;
+              dt     = stepping.cut(tried);
               out << "  Newton failed (" << newton.failure_reason
                   << "); cutting back to "
                   << (control != Control::load ? "a step of " : "dt = ") << dt
@@ -746,8 +747,6 @@ namespace pneuma
               BorderedVector step =
                 PathConstraintProblem::extend(result.state, t_new);
               step -= PathConstraintProblem::extend(last, t_old);
-              problem.set_arc_length(
-                x_last, dt, current.u_scale, psi2, current.force_scale);
               step_arc = problem.arc_length(step);
               current.arc_length += step_arc;
               ++current.path_steps;

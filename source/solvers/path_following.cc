@@ -37,33 +37,25 @@ namespace pneuma
     }
 
     void
-    PathConstraintProblem::set_arc_length(const BorderedVector &c,
-                                          const double          r,
-                                          const double          u_s,
-                                          const double          p2,
-                                          const double          f)
+    PathConstraintProblem::set_scales(const double u_s,
+                                      const double p2,
+                                      const double f,
+                                      const double rate)
     {
-      control = Control::arc_length;
-      center  = c;
-      radius  = r;
-      u_scale = u_s;
-      psi2    = p2;
-      force   = f;
+      u_scale      = u_s;
+      psi2         = p2;
+      force        = f;
+      monitor_rate = rate;
     }
 
     void
-    PathConstraintProblem::set_displacement(const BorderedVector &c,
-                                            const LA::Vector     &monitor,
-                                            const double          d,
-                                            const double          d_rate,
-                                            const double          f)
+    PathConstraintProblem::set_constraint(const Control         type,
+                                          const BorderedVector &c,
+                                          const double          size)
     {
-      control      = Control::displacement;
-      center       = c;
-      w            = monitor;
-      increment    = d;
-      monitor_rate = d_rate;
-      force        = f;
+      control = type;
+      center  = c;
+      set_size(size);
     }
 
     double
@@ -108,15 +100,21 @@ namespace pneuma
     }
 
     void
-    PathConstraintProblem::assemble(const BorderedVector &x,
-                                    BorderedVector       &residual)
+    PathConstraintProblem::assemble_model(const BorderedVector &x)
     {
       last_x             = model_part(x);
       model.current_time = load_factor(x);
       last_r             = last_x;
       model.assemble(last_x, last_r);
       rate_current = false;
-      residual     = extend(last_r, force * constraint(x));
+    }
+
+    void
+    PathConstraintProblem::assemble(const BorderedVector &x,
+                                    BorderedVector       &residual)
+    {
+      assemble_model(x);
+      residual = extend(last_r, force * constraint(x));
     }
 
     void
@@ -135,11 +133,7 @@ namespace pneuma
     BorderedVector
     PathConstraintProblem::tangent(const BorderedVector &x, double &force_rate)
     {
-      last_x             = model_part(x);
-      model.current_time = load_factor(x);
-      last_r             = last_x;
-      model.assemble(last_x, last_r);
-      rate_current = false;
+      assemble_model(x);
       update_rate();
       force_rate = rate.l2_norm();
       BorderedVector rhs(rate), t(rate);
@@ -160,37 +154,33 @@ namespace pneuma
       model.solve_again(rate, b);
 
       // The constraint row: g_u . du + g_tau dtau = r_g / F.
-      const double r_g         = load_factor(rhs) / force;
-      const double g_a         = gradient_dot(a.field);
-      const double g_b         = gradient_dot(b.field);
-      const double g_tau       = gradient_tau();
-      const double denominator = g_tau - g_b;
-      const double dtau = denominator != 0. ? (r_g - g_a) / denominator : 0.;
+      const Gradient g           = gradient();
+      const double   r_g         = load_factor(rhs) / force;
+      const double   g_a         = g.scale * (g.direction * a.field);
+      const double   g_b         = g.scale * (g.direction * b.field);
+      const double   denominator = g.tau - g_b;
+      const double   dtau = denominator != 0. ? (r_g - g_a) / denominator : 0.;
       a.add(-dtau, b);
       dx = extend(a, dtau);
     }
 
-    double
-    PathConstraintProblem::gradient_dot(const LA::Vector &v) const
+    PathConstraintProblem::Gradient
+    PathConstraintProblem::gradient() const
     {
+      Gradient g;
       if (control == Control::displacement)
-        return (w * v) / monitor_rate;
-      LA::Vector   du;
+        {
+          g.direction = w;
+          g.scale     = 1. / monitor_rate;
+          return g;
+        }
       const double s =
-        std::max(radius_at(last_x.field, model.current_time, du), 1e-300);
-      return (du * v) / (u_scale * u_scale * (1. + psi2) * s);
-    }
-
-    double
-    PathConstraintProblem::gradient_tau() const
-    {
-      if (control == Control::displacement)
-        return 0.;
-      LA::Vector   du;
-      const double s =
-        std::max(radius_at(last_x.field, model.current_time, du), 1e-300);
-      return psi2 * (model.current_time - load_factor(center))
-             / ((1. + psi2) * s);
+        std::max(radius_at(last_x.field, model.current_time, g.direction),
+                 1e-300);
+      g.scale = 1. / (u_scale * u_scale * (1. + psi2) * s);
+      g.tau =
+        psi2 * (model.current_time - load_factor(center)) / ((1. + psi2) * s);
+      return g;
     }
 
     void
@@ -198,15 +188,13 @@ namespace pneuma
     {
       BorderedVector       ym(last_r);
       const BorderedVector dm = model_part(d);
-      if (model.n_border() == 0)
-        model.tangent_matrix().vmult(ym.field, dm.field);
-      else
-        model.border_coupling().vmult(model.tangent_matrix(), dm, ym);
+      model.vmult(dm, ym);
       update_rate();
       ym.add(load_factor(d), rate);
-      y = extend(ym,
-                 force
-                   * (gradient_dot(d.field) + gradient_tau() * load_factor(d)));
+      const Gradient g = gradient();
+      y                = extend(
+        ym,
+        force * (g.scale * (g.direction * d.field) + g.tau * load_factor(d)));
     }
 
     double

@@ -300,6 +300,9 @@ namespace pneuma
     void
     solve_again(const solvers::BorderedVector &rhs,
                 solvers::BorderedVector       &du);
+    /// y = J x with the bordered Jacobian of the last assemble().
+    void
+    vmult(const solvers::BorderedVector &x, solvers::BorderedVector &y) const;
     /// True if some prescribed value (supports, rigid plates, cable ends)
     /// differs between pseudo times @p t0 and @p t1.
     bool

@@ -91,22 +91,27 @@ namespace pneuma
       BorderedVector
       tangent(const BorderedVector &x, double &force_rate);
 
-      /// Arc-length constraint of radius @p radius about the converged
-      /// @p center, with scale U = @p u_scale, \f$\psi^2\f$ = @p psi2.
+      /// The monitor functional w (w . u is the monitored component).
       void
-      set_arc_length(const BorderedVector &center,
-                     const double          radius,
-                     const double          u_scale,
-                     const double          psi2,
-                     const double          force_scale);
-      /// Displacement control: @p w . (u - center) = @p increment, with
-      /// the rate of the monitor per pseudo time @p rate.
+      set_monitor(const LA::Vector &monitor)
+      {
+        w = monitor;
+      }
+      /// The scales of the stage: U = |du/dtau| (@p u_scale), \f$\psi^2\f$
+      /// (@p psi2), F = |dR/dtau| (@p force_scale) and the monitor's
+      /// |rate| per pseudo time (@p rate).
       void
-      set_displacement(const BorderedVector &center,
-                       const LA::Vector     &w,
-                       const double          increment,
-                       const double          rate,
-                       const double          force_scale);
+      set_scales(const double u_scale,
+                 const double psi2,
+                 const double force_scale,
+                 const double rate);
+      /// The constraint of the step from the converged (extended)
+      /// @p center: the arc length @p size (arc_length) or the monitor's
+      /// change @p size (displacement).
+      void
+      set_constraint(const Control         type,
+                     const BorderedVector &center,
+                     const double          size);
 
       /// Change the constraint's size: the arc radius, or the monitor's
       /// prescribed change.
@@ -173,12 +178,18 @@ namespace pneuma
       radius_at(const LA::Vector &field,
                 const double      tau,
                 LA::Vector       &du) const;
-      /// The constraint's gradient at the last assembled state applied to
-      /// a field direction @p du: g_u . du; and g_tau.
-      double
-      gradient_dot(const LA::Vector &du) const;
-      double
-      gradient_tau() const;
+      /// Assemble the model at the extended @p x (its time too).
+      void
+      assemble_model(const BorderedVector &x);
+      /// The constraint's gradient at the last assembled state:
+      /// g_u = scale * direction, and g_tau.
+      struct Gradient
+      {
+        LA::Vector direction;
+        double     scale = 0., tau = 0.;
+      };
+      Gradient
+      gradient() const;
 
       Model         &model;
       double         h;
