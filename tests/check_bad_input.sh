@@ -219,6 +219,28 @@ else
   echo "ok   unreached target: exit $code: $(tail -n 1 <<<"$out" | head -c 200)"
 fi
 check_mpi "$dir/valid.prm"          1 "Load stepping/Control: stage 2 is path-controlled, but no load changes in it" --set "Loads/Pressure/Function expression=100*min(t,1)" --set "Load stepping/Stage end times=1, 2" --set "Load stepping/Control=load, arc-length"
+# Eigen analysis: too many modes (exit 1), a failure of the analysis (exit
+# 2 with the last state written, one line of message after the run's log,
+# no non-finite number).
+check "$k"                          1 "Eigen analysis/Number of modes: 8 modes asked of a problem with 9 free unknowns; at most 7 can be computed" --set "Eigen analysis/Type=tangent" --set "Eigen analysis/Number of modes=8"
+check_mpi "$k"                      1 "Eigen analysis/Number of modes: 8 modes asked of a problem with 9 free unknowns; at most 7 can be computed" --set "Eigen analysis/Type=tangent" --set "Eigen analysis/Number of modes=8"
+check "$k"                          1 "Eigen analysis/Shift: a modal analysis' shift is a frequency [Hz] and must not be negative" --set "Eigen analysis/Type=modal" --set "Eigen analysis/Shift=-1"
+check "$k"                          1 "Eigen analysis/Type: The string <eigen> does not match" --set "Eigen analysis/Type=eigen"
+eigen_fails() { # directory, message, settings...
+  local out code
+  out=$("$pneuma" "$k" --set "Output/Directory=$1" "${@:3}" 2>&1)
+  code=$?
+  if [ "$code" -ne 2 ] || [ "$(grep -c "pneuma: " <<<"$out")" -lt 1 ] ||
+     ! grep -qF -- "$2" <<<"$(tail -n 2 <<<"$out")" || [ -n "$(non_finite)" ] ||
+     [ ! -s "$1/summary.json" ]; then
+    echo "FAIL eigen analysis ($1): exit $code, message: $(tail -n 3 <<<"$out")"
+    fail=1
+  else
+    echo "ok   eigen analysis ($1): exit $code: $(tail -n 1 <<<"$out" | head -c 200)"
+  fi
+}
+eigen_fails eigen-massless "the eigen analysis failed: the model has no mass" --set "Eigen analysis/Type=modal"
+eigen_fails eigen-unconverged "the eigen analysis failed: ARPACK did not find" --set "Eigen analysis/Type=modal" --set "Cables/Cable 1/Density=7850" --set "Cables/Cable 1/Number of elements=40" --set "Eigen analysis/Maximum iterations=1" --set "Eigen analysis/Tolerance=1e-15" --set "Eigen analysis/Number of modes=10"
 # Stability entries.
 check "$dir/valid.prm"              1 "Stability/Locate critical points: The string <2> does not match" --set "Stability/Locate critical points=2"
 check "$dir/valid.prm"              1 "Stability/Check inertia: The string <maybe> does not match" --set "Stability/Check inertia=maybe"

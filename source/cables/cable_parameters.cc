@@ -146,7 +146,8 @@ namespace pneuma
           prm.add_parameter("Density",
                             s.density,
                             "Mass density [kg/m^3]; gravity (Loads/Gravity) "
-                            "acts on density * area per unstressed length.",
+                            "acts on density * area per unstressed length, "
+                            "and a modal analysis' mass is the same.",
                             Patterns::Double(0.));
           prm.add_parameter("Prestress force",
                             s.prestress_force,

@@ -78,6 +78,20 @@ namespace pneuma
     }
 
     void
+    CableSubsystem::add_mass(const AffineConstraints<double> &constraints,
+                             LA::SparseMatrix                &M) const
+    {
+      cables.assemble_mass(constraints, M);
+    }
+
+    void
+    CableSubsystem::add_mode_fields(const std::vector<std::string> &names,
+                                    const std::vector<LA::Vector>  &modes)
+    {
+      cables.set_mode_fields(names, modes);
+    }
+
+    void
     CableSubsystem::add_near_null_space(
       const IndexSet                   &owned,
       std::vector<std::vector<double>> &modes) const

@@ -605,6 +605,71 @@ namespace pneuma
       matrix.compress(VectorOperation::add);
     }
 
+    void
+    CableSystem::assemble_mass(const AffineConstraints<double> &constraints,
+                               LA::SparseMatrix                &matrix) const
+    {
+      if (is_owner)
+        for (const auto &b : bodies)
+          {
+            const FiniteElement<1, 3> &fe = *b->fe;
+            const unsigned int         n  = fe.n_dofs_per_cell();
+            // Per unstressed length, as gravity; per reference length.
+            const double rho_A =
+              b->definition.density * b->definition.area() / b->rho;
+            FEValues<1, 3>                       fe_values(mapping(),
+                                     fe,
+                                     QGauss<1>(fe.degree + 1),
+                                     update_values | update_JxW_values);
+            FullMatrix<double>                   cell_matrix(n, n);
+            std::vector<types::global_dof_index> dofs(n);
+            for (const auto &cell : b->dof_handler.active_cell_iterators())
+              {
+                fe_values.reinit(cell);
+                cell_matrix = 0.;
+                for (const unsigned int q :
+                     fe_values.quadrature_point_indices())
+                  for (unsigned int i = 0; i < n; ++i)
+                    {
+                      const auto [ci, bi] = fe.system_to_component_index(i);
+                      if (ci >= 3)
+                        continue;
+                      for (unsigned int j = 0; j < n; ++j)
+                        if (fe.system_to_component_index(j).first == ci)
+                          cell_matrix(i, j) +=
+                            rho_A * fe_values.shape_value(i, q)
+                            * fe_values.shape_value(j, q) * fe_values.JxW(q);
+                    }
+                cell->get_dof_indices(dofs);
+                for (auto &i : dofs)
+                  i += b->offset;
+                constraints.distribute_local_to_global(cell_matrix,
+                                                       dofs,
+                                                       matrix);
+              }
+          }
+      matrix.compress(VectorOperation::add);
+    }
+
+    void
+    CableSystem::set_mode_fields(const std::vector<std::string> &names,
+                                 const std::vector<LA::Vector>  &modes)
+    {
+      mode_fields.assign(bodies.size(), {});
+      for (unsigned int k = 0; k < bodies.size(); ++k)
+        for (unsigned int m = 0; m < modes.size(); ++m)
+          {
+            const Vector<double> all(modes[m]); // every rank calls
+            if (is_owner)
+              {
+                Vector<double> local(bodies[k]->dof_handler.n_dofs());
+                for (unsigned int i = 0; i < local.size(); ++i)
+                  local[i] = all[bodies[k]->offset + i];
+                mode_fields[k].emplace_back(names[m], local);
+              }
+          }
+    }
+
     int
     CableSystem::translation_component(const types::global_dof_index i) const
     {
@@ -778,6 +843,19 @@ namespace pneuma
             data_out.add_data_vector(fields[f],
                                      field_names[f],
                                      DataOut<1, 3>::type_cell_data);
+          // Mode shapes: the mid-line components as one vector, the
+          // element's further components (a solid beam's section) apart.
+          if (k < mode_fields.size())
+            for (const auto &[name, values] : mode_fields[k])
+              {
+                std::vector<std::string> mode_names;
+                for (unsigned int c = 0; c < names.size(); ++c)
+                  mode_names.push_back(c < 3 ? name : name + "_" + names[c]);
+                data_out.add_data_vector(values,
+                                         mode_names,
+                                         DataOut<1, 3>::type_dof_data,
+                                         interpretation);
+              }
           if (k < extra_fields.size())
             for (const auto &[name, values] : extra_fields[k])
               data_out.add_data_vector(values,
@@ -788,7 +866,12 @@ namespace pneuma
                                    + Utilities::int_to_string(step, 4) + ".vtu";
           std::ofstream file(directory + "/" + name);
           data_out.write_vtu(file);
-          pvd_records.emplace_back(t, name);
+          // A state written again (with its modes) keeps one record.
+          if (std::find_if(pvd_records.begin(),
+                           pvd_records.end(),
+                           [&](const auto &r) { return r.second == name; })
+              == pvd_records.end())
+            pvd_records.emplace_back(t, name);
         }
       // cables.pvd: one dataset per cable ("part") and time.
       std::ofstream pvd(directory + "/cables.pvd");

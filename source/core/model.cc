@@ -458,8 +458,56 @@ namespace pneuma
     ghost(state.field);
     for (const auto &s : subsystems)
       s->add_output_fields(ghosted);
+    if (!mode_fields.empty())
+      for (const auto &s : subsystems)
+        s->add_mode_fields(mode_names, mode_fields);
     for (const auto &s : subsystems)
       s->write_output_files(directory, step, t, ghosted);
+    mode_names.clear();
+    mode_fields.clear();
+  }
+
+  void
+  Model::set_output_modes(const std::vector<std::string> &names,
+                          const std::vector<LA::Vector>  &modes)
+  {
+    mode_names = names;
+    mode_fields.clear();
+    for (const auto &m : modes)
+      {
+        LA::Vector owned_mode(m);
+        update_constraints.distribute(owned_mode);
+        AssertThrow(std::isfinite(owned_mode.l2_norm()),
+                    ExcMessage("refusing to write a non-finite mode"));
+        mode_fields.emplace_back(owned, relevant, comm);
+        mode_fields.back() = owned_mode;
+      }
+  }
+
+  void
+  Model::assemble_tangent(const solvers::BorderedVector &u,
+                          const double                   t,
+                          LA::SparseMatrix              &K,
+                          solvers::BorderCoupling       &border)
+  {
+    solvers::BorderedVector residual;
+    residual.field.reinit(u.field);
+    border.reinit(n_border(), external);
+    K = 0.;
+    assemble_into(u, t, residual, &K, nullptr, border);
+  }
+
+  void
+  Model::assemble_mass(LA::SparseMatrix &M) const
+  {
+    M.reinit(laplacian);
+    M = 0.;
+    for (const auto &s : subsystems)
+      s->add_mass(update_constraints, M);
+    for (const auto i : owned)
+      if (update_constraints.is_constrained(i))
+        M.set(i, i, 0.);
+    M.compress(VectorOperation::insert);
   }
 
   // ------------------------------------------------------------------

@@ -6,6 +6,7 @@
 #include <pneuma/core/model.h>
 #include <pneuma/core/output.h>
 #include <pneuma/core/simulator.h>
+#include <pneuma/solvers/eigen_analysis.h>
 #include <pneuma/solvers/load_path.h>
 #include <pneuma/solvers/stability.h>
 
@@ -36,6 +37,10 @@ namespace pneuma
     RunResult
     run_once();
 
+    /// Print the eigen analysis' outcome.
+    void
+    report_eigen();
+
     /// The row of history.csv at a converged step.
     Statistics
     history_row(const solvers::PathStep       &step,
@@ -57,7 +62,10 @@ namespace pneuma
     bool                                     check_stability = true;
     std::unique_ptr<solvers::StabilityCheck> stability;
     solvers::StabilityReport                 last_stability;
-    unsigned int                             unstable_steps = 0;
+    /// The eigen analysis of the final state (solvers/eigen_analysis.h).
+    solvers::EigenParameters eigen;
+    solvers::EigenResult     eigen_result;
+    unsigned int             unstable_steps = 0;
     double first_unstable = std::numeric_limits<double>::quiet_NaN();
     /// Bracket of the bisection of a critical point, relative to the step.
     double locate_tolerance = 1e-2;
@@ -95,6 +103,7 @@ namespace pneuma
     impl->path.declare_parameters(prm);
     impl->output.declare_parameters(prm);
     impl->checkpoints.declare_parameters(prm);
+    impl->eigen.declare_parameters(prm);
     prm.enter_subsection("Stability");
     prm.add_parameter(
       "Check inertia",
@@ -121,6 +130,7 @@ namespace pneuma
     impl->path.parse_parameters(prm);
     impl->output.parse_parameters(prm);
     impl->checkpoints.parse_parameters(prm);
+    impl->eigen.parse_parameters(prm);
     // An adaptive study restarts from its beginning: each cycle is a new
     // run on a mesh refined from the last one's result.
     check_input(!impl->checkpoints.enabled()
@@ -178,6 +188,7 @@ namespace pneuma
     // The output directory must be writable before any work.
     impl->output.check_directory(impl->comm);
     impl->model.setup();
+    solvers::EigenAnalysis::check_size(impl->model, impl->eigen);
   }
 
   std::pair<double, double>
@@ -313,6 +324,39 @@ namespace pneuma
     return row;
   }
 
+  void
+  Simulator::Impl::report_eigen()
+  {
+    const solvers::EigenResult &r = eigen_result;
+    if (!r.computed)
+      {
+        pcout << "eigen analysis (" << eigen.type << "): " << r.error
+              << std::endl;
+        return;
+      }
+    pcout << "eigen analysis (" << eigen.type << ") at t = " << r.time << ": "
+          << r.values.size() << " modes in " << r.iterations
+          << " ARPACK restarts, largest relative residual " << std::scientific
+          << std::setprecision(2) << r.residual;
+    if (eigen.type != "buckling")
+      pcout << ", " << r.below_shift << " eigenvalue(s) below the shift";
+    pcout << std::endl;
+    for (unsigned int k = 0; k < r.values.size(); ++k)
+      {
+        pcout << "  mode " << std::setw(3) << k + 1 << ": " << std::setw(14)
+              << std::setprecision(6) << r.values[k];
+        if (eigen.type == "tangent")
+          pcout << " N/m";
+        else if (eigen.type == "modal")
+          pcout << " 1/s^2, f = " << std::setw(13)
+                << solvers::EigenAnalysis::frequency(r.values[k]) << " Hz";
+        else
+          pcout << ", critical t = " << std::setw(13) << r.time + r.values[k];
+        pcout << std::endl;
+      }
+    pcout << std::defaultfloat;
+  }
+
   RunResult
   Simulator::Impl::run_once()
   {
@@ -430,8 +474,33 @@ namespace pneuma
               " A checkpoint is in " + checkpoint_directory()
               + "; continue with --restart " + checkpoint_directory();
           }
+        // The eigen analysis of the final state; its modes go with the
+        // state's output.
+        bool with_modes = false;
+        if (eigen.active() && path_result.exit_code == success)
+          {
+            model.current_time = path_result.final_time;
+            eigen_result =
+              solvers::EigenAnalysis::run(model, path_result.state, eigen);
+            report_eigen();
+            if (!eigen_result.computed)
+              {
+                path_result.exit_code = solver_failed;
+                path_result.message =
+                  "the eigen analysis failed: " + eigen_result.error;
+              }
+            else if (eigen.write_modes)
+              {
+                std::vector<std::string> names;
+                for (unsigned int k = 0; k < eigen_result.modes.size(); ++k)
+                  names.push_back("mode_" + std::to_string(k + 1));
+                model.set_output_modes(names, eigen_result.modes);
+                with_modes = true;
+              }
+          }
         // The last converged state is always written.
-        if (output.write_vtu() && last_written != path_result.steps)
+        if (output.write_vtu()
+            && (last_written != path_result.steps || with_modes))
           write_vtu(path_result.steps,
                     path_result.final_time,
                     path_result.state);
@@ -506,6 +575,36 @@ namespace pneuma
         row.add_count(g, "negative_after", c.after, counts);
         if (path.follows_path())
           row.add(g, "monitor", "m", c.monitor, counts);
+      }
+    if (eigen_result.computed)
+      {
+        row.add_count(run,
+                      "eigen_below_shift",
+                      eigen_result.below_shift,
+                      counts);
+        row.add_count(run, "eigen_iterations", eigen_result.iterations, counts);
+        row.add(run, "eigen_residual", "", eigen_result.residual, counts);
+        for (unsigned int k = 0; k < eigen_result.values.size(); ++k)
+          {
+            const double          v = eigen_result.values[k];
+            const StatisticsGroup g{"mode", "eigen_modes", "mode", k + 1};
+            if (eigen.type == "tangent")
+              row.add(g, "eigenvalue", "N/m", v, counts);
+            else if (eigen.type == "modal")
+              {
+                row.add(g, "omega_squared", "1/s^2", v, counts);
+                row.add(g,
+                        "frequency",
+                        "Hz",
+                        solvers::EigenAnalysis::frequency(v),
+                        counts);
+              }
+            else
+              {
+                row.add(g, "load_factor", "", v, counts);
+                row.add(g, "critical_time", "", eigen_result.time + v, counts);
+              }
+          }
       }
     if (check_stability)
       {

@@ -31,10 +31,13 @@ namespace pneuma
                             slot->thickness,
                             "Reference wall thickness H [m]; must be > 0.",
                             Patterns::Double());
-          prm.add_parameter("Density",
-                            slot->density,
-                            "Mass density [kg/m^3] (gravity).",
-                            Patterns::Double(0.));
+          prm.add_parameter(
+            "Density",
+            slot->density,
+            "Mass density [kg/m^3]: gravity, and the mass of a modal "
+            "analysis (density * thickness per reference "
+            "area).",
+            Patterns::Double(0.));
           slot->laws = laws.declare_all(prm);
           prm.leave_subsection();
           slots.push_back(std::move(slot));

@@ -281,6 +281,43 @@ namespace pneuma
       L.compress(VectorOperation::add);
     }
 
+    void
+    MembraneAssembler::mass_matrix(const AffineConstraints<double> &constraints,
+                                   LA::SparseMatrix                &M) const
+    {
+      const auto                          &fe = dof_handler->get_fe();
+      const QGauss<2>                      quadrature(degree + 1);
+      FEValues<2, 3>                       fe_values(*mapping,
+                               fe,
+                               quadrature,
+                               update_values | update_JxW_values);
+      const unsigned int                   n_dofs = fe.n_dofs_per_cell();
+      std::vector<types::global_dof_index> dof_indices(n_dofs);
+      FullMatrix<double>                   cell_matrix(n_dofs, n_dofs);
+      for (const auto &cell : dof_handler->active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const RegionMaterial &m     = materials[cell->material_id()];
+            const double          rho_h = m.density * m.thickness;
+            fe_values.reinit(cell);
+            cell->get_dof_indices(dof_indices);
+            cell_matrix = 0;
+            for (unsigned int q = 0; q < quadrature.size(); ++q)
+              for (unsigned int i = 0; i < n_dofs; ++i)
+                {
+                  const unsigned int ci = fe.system_to_component_index(i).first;
+                  for (unsigned int j = 0; j < n_dofs; ++j)
+                    if (fe.system_to_component_index(j).first == ci)
+                      cell_matrix(i, j) +=
+                        rho_h * fe_values.shape_value_component(i, q, ci)
+                        * fe_values.shape_value_component(j, q, ci)
+                        * fe_values.JxW(q);
+                }
+            constraints.distribute_local_to_global(cell_matrix, dof_indices, M);
+          }
+      M.compress(VectorOperation::add);
+    }
+
     double
     MembraneAssembler::enclosed_volume(const LA::Vector &u) const
     {

@@ -416,6 +416,13 @@ namespace pneuma
     }
 
     void
+    MembraneSubsystem::add_mass(const AffineConstraints<double> &constraints,
+                                LA::SparseMatrix                &M) const
+    {
+      assembler->mass_matrix(constraints, M);
+    }
+
+    void
     MembraneSubsystem::add_near_null_space(
       const IndexSet                   &owned,
       std::vector<std::vector<double>> &modes) const
@@ -716,6 +723,21 @@ namespace pneuma
     }
 
     void
+    MembraneSubsystem::add_mode_fields(const std::vector<std::string> &names,
+                                       const std::vector<LA::Vector>  &modes)
+    {
+      const std::vector<
+        DataComponentInterpretation::DataComponentInterpretation>
+        interpretation(
+          3, DataComponentInterpretation::component_is_part_of_vector);
+      for (unsigned int k = 0; k < modes.size(); ++k)
+        output->add_data_vector(modes[k],
+                                std::vector<std::string>(3, names[k]),
+                                DataOut<2, 3>::type_dof_data,
+                                interpretation);
+    }
+
+    void
     MembraneSubsystem::write_output_files(const std::string &directory,
                                           const unsigned int step,
                                           const double       t,
@@ -728,7 +750,9 @@ namespace pneuma
         directory + "/", "solution", step, comm, 4);
       if (step == 0)
         pvd_records.clear();
-      pvd_records.emplace_back(t, pvtu);
+      // A state written again (with its modes) keeps one record.
+      if (pvd_records.empty() || pvd_records.back().second != pvtu)
+        pvd_records.emplace_back(t, pvtu);
       if (Utilities::MPI::this_mpi_process(comm) == 0)
         {
           std::ofstream pvd(directory + "/solution.pvd");

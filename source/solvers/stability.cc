@@ -14,30 +14,81 @@ namespace pneuma
       /// Relative size below which a border eigenvalue or a deviation from
       /// proportionality is round-off.
       constexpr double round_off = 1e-8;
-
-      /// Number of negative eigenvalues of the symmetric part of @p S.
-      long long
-      negative_eigenvalues(const FullMatrix<double> &S)
-      {
-        const unsigned int m = S.m();
-        if (m == 0)
-          return 0;
-        LAPACKFullMatrix<double> lapack(m, m);
-        double                   scale = 0.;
-        for (unsigned int i = 0; i < m; ++i)
-          for (unsigned int j = 0; j < m; ++j)
-            {
-              lapack(i, j) = 0.5 * (S(i, j) + S(j, i));
-              scale        = std::max(scale, std::abs(S(i, j)));
-            }
-        lapack.compute_eigenvalues();
-        long long n = 0;
-        for (unsigned int i = 0; i < m; ++i)
-          if (lapack.eigenvalue(i).real() < -round_off * scale)
-            ++n;
-        return n;
-      }
     } // namespace
+
+    long long
+    negative_eigenvalues(const FullMatrix<double> &S)
+    {
+      const unsigned int m = S.m();
+      if (m == 0)
+        return 0;
+      LAPACKFullMatrix<double> lapack(m, m);
+      double                   scale = 0.;
+      for (unsigned int i = 0; i < m; ++i)
+        for (unsigned int j = 0; j < m; ++j)
+          {
+            lapack(i, j) = 0.5 * (S(i, j) + S(j, i));
+            scale        = std::max(scale, std::abs(S(i, j)));
+          }
+      lapack.compute_eigenvalues();
+      long long n = 0;
+      for (unsigned int i = 0; i < m; ++i)
+        if (lapack.eigenvalue(i).real() < -round_off * scale)
+          ++n;
+      return n;
+    }
+
+    double
+    asymmetry(const LA::SparseMatrix &K, const IndexSet &owned)
+    {
+      LA::Vector x(owned, K.get_mpi_communicator()), y(x), Kx(x), Ky(x);
+      for (const auto i : owned)
+        {
+          x[i] = std::sin(1.3 * i + 0.1);
+          y[i] = std::cos(0.7 * i + 0.2);
+        }
+      x.compress(VectorOperation::insert);
+      y.compress(VectorOperation::insert);
+      K.vmult(Kx, x);
+      K.vmult(Ky, y);
+      return std::abs(y * Kx - x * Ky)
+             / std::max(Kx.l2_norm() * y.l2_norm(), 1e-300);
+    }
+
+    EnergyBorder
+    energy_border(const BorderCoupling &c)
+    {
+      EnergyBorder e;
+      for (unsigned int j = 0; j < c.size(); ++j)
+        {
+          if (!c.has_B[j] || !c.has_C[j])
+            continue;
+          const double CC = c.C[j] * c.C[j];
+          if (CC == 0. || c.B[j].l2_norm() == 0.)
+            continue;
+          const double a = (c.B[j] * c.C[j]) / CC;
+          LA::Vector   d(c.B[j]);
+          d.add(-a, c.C[j]);
+          if (d.l2_norm() > round_off * c.B[j].l2_norm())
+            e.energy_form = false;
+          e.kept.push_back(j);
+          e.alpha.push_back(a);
+        }
+      const unsigned int m = e.kept.size();
+      e.AD.reinit(m, m);
+      double scale = 0.;
+      for (unsigned int i = 0; i < m; ++i)
+        for (unsigned int j = 0; j < m; ++j)
+          {
+            e.AD(i, j) = e.alpha[i] * c.D(e.kept[i], e.kept[j]);
+            scale      = std::max(scale, std::abs(e.AD(i, j)));
+          }
+      FullMatrix<double> minus_AD(m, m);
+      minus_AD.add(-1., e.AD);
+      if (scale > 0. && negative_eigenvalues(minus_AD) > 0)
+        e.energy_form = false;
+      return e;
+    }
 
     StabilityCheck::StabilityCheck(const MPI_Comm comm)
       : inertia(comm)
@@ -54,20 +105,7 @@ namespace pneuma
       model.assemble(state, residual);
       const LA::SparseMatrix &K = model.tangent_matrix();
 
-      // How symmetric K is, on two fixed vectors.
-      LA::Vector x(state.field), y(state.field), Kx(state.field),
-        Ky(state.field);
-      for (const auto i : model.locally_owned())
-        {
-          x[i] = std::sin(1.3 * i + 0.1);
-          y[i] = std::cos(0.7 * i + 0.2);
-        }
-      x.compress(VectorOperation::insert);
-      y.compress(VectorOperation::insert);
-      K.vmult(Kx, x);
-      K.vmult(Ky, y);
-      report.asymmetry = std::abs(y * Kx - x * Ky)
-                         / std::max(Kx.l2_norm() * y.l2_norm(), 1e-300);
+      report.asymmetry = asymmetry(K, model.locally_owned());
 
       const Inertia k       = inertia.compute(K);
       report.negative_field = k.negative;
@@ -75,29 +113,11 @@ namespace pneuma
       report.computed       = true;
 
       // The coupled chamber unknowns in energy form (see the header).
-      const BorderCoupling     &c = model.border_coupling();
-      std::vector<unsigned int> kept;
-      std::vector<double>       alpha;
-      for (unsigned int j = 0; j < c.size(); ++j)
-        {
-          if (!c.has_B[j] || !c.has_C[j])
-            continue;
-          const double CC = c.C[j] * c.C[j];
-          if (CC == 0. || c.B[j].l2_norm() == 0.)
-            continue;
-          const double a = (c.B[j] * c.C[j]) / CC;
-          LA::Vector   d(c.B[j]);
-          d.add(-a, c.C[j]);
-          if (d.l2_norm() > round_off * c.B[j].l2_norm())
-            report.energy_form = false;
-          kept.push_back(j);
-          alpha.push_back(a);
-        }
-      const unsigned int m = kept.size();
-      FullMatrix<double> AD(m, m), S(m, m);
-      for (unsigned int i = 0; i < m; ++i)
-        for (unsigned int j = 0; j < m; ++j)
-          AD(i, j) = alpha[i] * c.D(kept[i], kept[j]);
+      const BorderCoupling &c = model.border_coupling();
+      const EnergyBorder    e = energy_border(c);
+      report.energy_form      = e.energy_form;
+      const unsigned int m    = e.size();
+      FullMatrix<double> S(m, m);
       if (m > 0)
         {
           if (k.zero > 0)
@@ -105,22 +125,14 @@ namespace pneuma
           // S = A D - B^T K^{-1} B: one substitution per unknown.
           std::vector<Vector<double>> B(m);
           for (unsigned int i = 0; i < m; ++i)
-            B[i] = c.B[kept[i]];
+            B[i] = c.B[e.kept[i]];
           for (unsigned int j = 0; j < m; ++j)
             {
               Vector<double> z(B[j].size());
               inertia.solve(B[j], z);
               for (unsigned int i = 0; i < m; ++i)
-                S(i, j) = AD(i, j) - B[i] * z;
+                S(i, j) = e.AD(i, j) - B[i] * z;
             }
-          FullMatrix<double> minus_AD(m, m);
-          minus_AD.add(-1., AD);
-          double scale = 0.;
-          for (unsigned int i = 0; i < m; ++i)
-            for (unsigned int j = 0; j < m; ++j)
-              scale = std::max(scale, std::abs(AD(i, j)));
-          if (scale > 0. && negative_eigenvalues(minus_AD) > 0)
-            report.energy_form = false;
         }
       report.negative = k.negative + negative_eigenvalues(S) - m;
       if (!report.energy_form)

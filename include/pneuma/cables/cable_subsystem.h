@@ -56,6 +56,12 @@ namespace pneuma
       add_regularisation(const AffineConstraints<double> &constraints,
                          LA::SparseMatrix                &L) const override;
       void
+      add_mass(const AffineConstraints<double> &constraints,
+               LA::SparseMatrix                &M) const override;
+      void
+      add_mode_fields(const std::vector<std::string> &names,
+                      const std::vector<LA::Vector>  &modes) override;
+      void
       add_near_null_space(
         const IndexSet                   &owned,
         std::vector<std::vector<double>> &modes) const override;

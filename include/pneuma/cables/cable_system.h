@@ -157,6 +157,19 @@ namespace pneuma
       assemble_regularisation(const AffineConstraints<double> &constraints,
                               LA::SparseMatrix                &matrix) const;
 
+      /// The consistent mass of the mid-lines' translations, int rho A
+      /// N_i N_j dS over the reference curve (section unknowns of a solid
+      /// beam carry none).
+      void
+      assemble_mass(const AffineConstraints<double> &constraints,
+                    LA::SparseMatrix                &matrix) const;
+
+      /// Mode shapes (global vectors) to add as nodal fields to the next
+      /// write_output(), by name.
+      void
+      set_mode_fields(const std::vector<std::string> &names,
+                      const std::vector<LA::Vector>  &modes);
+
       /// For the AMG near-null space: the displacement component (0..2) of
       /// owned cable dof @p i, or -1 (an element's further unknowns).
       int
@@ -211,6 +224,9 @@ namespace pneuma
       std::vector<std::pair<double, std::string>> pvd_records;
       std::vector<std::vector<std::pair<std::string, Vector<double>>>>
         extra_fields;
+      /// Per cable: the mode shapes of the next write_output().
+      std::vector<std::vector<std::pair<std::string, Vector<double>>>>
+        mode_fields;
     };
   } // namespace cables
 } // namespace pneuma

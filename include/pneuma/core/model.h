@@ -322,6 +322,30 @@ namespace pneuma
                   const double h,
                   const bool   path_constraint = false);
 
+    /**
+     * The tangent and border blocks at @p u and pseudo time @p t into
+     * @p K (with the tangent's pattern: copy_from(tangent_matrix()) first)
+     * and @p border, leaving the model's own tangent as it is (linear
+     * buckling differences two tangents).
+     */
+    void
+    assemble_tangent(const solvers::BorderedVector &u,
+                     const double                   t,
+                     LA::SparseMatrix              &K,
+                     solvers::BorderCoupling       &border);
+    /**
+     * The mass matrix of every subsystem (Subsystem::add_mass) in the
+     * tangent's pattern; the rows and columns of constrained dofs are zero
+     * (their motion is not free: no inertia of their own).
+     */
+    void
+    assemble_mass(LA::SparseMatrix &M) const;
+    /// Mode shapes (owned vectors; their dependent dofs are filled here)
+    /// to add, as fields named @p names, to the next write_output().
+    void
+    set_output_modes(const std::vector<std::string> &names,
+                     const std::vector<LA::Vector>  &modes);
+
   private:
     /// One assembly pass at @p u and pseudo time @p t into @p residual,
     /// the tangent @p K and the applied loads @p f_ext (either may be
@@ -356,8 +380,11 @@ namespace pneuma
     solvers::BorderCoupling           coupling;
     /// Border blocks of assemble_residual(), thrown away.
     solvers::BorderCoupling scratch_coupling;
-    unsigned int            linear_solves = 0;
-    std::string             restart;
+    /// Mode shapes of the next write_output() (ghosted).
+    std::vector<std::string> mode_names;
+    std::vector<LA::Vector>  mode_fields;
+    unsigned int             linear_solves = 0;
+    std::string              restart;
     /// Solver counts at the last commit_step() (for checkpoints).
     std::vector<unsigned int> committed_counts = {0, 0, 0};
   };

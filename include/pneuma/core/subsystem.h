@@ -167,6 +167,19 @@ namespace pneuma
       (void)L;
     }
     /**
+     * The mass matrix of the eigen analysis (solvers/eigen_analysis.h):
+     * the consistent mass of this subsystem's translations in the
+     * reference configuration (density times thickness or section area),
+     * distributed with @p constraints into @p M (the tangent's pattern).
+     */
+    virtual void
+    add_mass(const dealii::AffineConstraints<double> &constraints,
+             LA::SparseMatrix                        &M) const
+    {
+      (void)constraints;
+      (void)M;
+    }
+    /**
      * Near-null-space vectors for AMG over the owned dofs (in the order of
      * @p owned), filled where this subsystem owns dofs: modes 0-2 the
      * rigid translations, 3-5 the rotations (left zero if the subsystem
@@ -352,6 +365,18 @@ namespace pneuma
     add_output_fields(const LA::Vector &field)
     {
       (void)field;
+    }
+    /**
+     * Output, between phases 1 and 2: add the mode shapes @p modes
+     * (ghosted global vectors, alive until phase 2) of an eigen analysis
+     * as fields named @p names (e.g. "mode_1") to this subsystem's output.
+     */
+    virtual void
+    add_mode_fields(const std::vector<std::string> &names,
+                    const std::vector<LA::Vector>  &modes)
+    {
+      (void)names;
+      (void)modes;
     }
     /// Output, phase 2: write this subsystem's files for @p step into
     /// @p directory (VTU, PVTU, PVD records).

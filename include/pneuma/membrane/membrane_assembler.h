@@ -93,6 +93,15 @@ namespace pneuma
       surface_laplacian(const AffineConstraints<double> &constraints,
                         LA::SparseMatrix                &L) const;
 
+      /**
+       * Consistent mass M_ij = int rho h N_i . N_j dA over the reference
+       * surface (rho and h of each cell's material region), the membrane's
+       * part of the eigen analysis' mass matrix.
+       */
+      void
+      mass_matrix(const AffineConstraints<double> &constraints,
+                  LA::SparseMatrix                &M) const;
+
       /// Volume enclosed by the current surface, V = 1/3 int x.n da.
       double
       enclosed_volume(const LA::Vector &u) const;

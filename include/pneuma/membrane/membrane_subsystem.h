@@ -116,6 +116,9 @@ namespace pneuma
       add_regularisation(const AffineConstraints<double> &constraints,
                          LA::SparseMatrix                &L) const override;
       void
+      add_mass(const AffineConstraints<double> &constraints,
+               LA::SparseMatrix                &M) const override;
+      void
       add_near_null_space(
         const IndexSet                   &owned,
         std::vector<std::vector<double>> &modes) const override;
@@ -141,6 +144,9 @@ namespace pneuma
                      const LA::Vector &field) const override;
       void
       add_output_fields(const LA::Vector &field) override;
+      void
+      add_mode_fields(const std::vector<std::string> &names,
+                      const std::vector<LA::Vector>  &modes) override;
       void
       write_output_files(const std::string &directory,
                          const unsigned int step,

@@ -35,6 +35,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace pneuma
 {
@@ -42,6 +43,8 @@ namespace pneuma
 
   namespace solvers
   {
+    struct BorderCoupling;
+
     /// The stability of one converged state.
     struct StabilityReport
     {
@@ -61,6 +64,36 @@ namespace pneuma
       /// Why the count is not exact (empty: it is).
       std::string note;
     };
+
+    /**
+     * The coupled chamber unknowns of @p c in energy form: the kept
+     * unknowns j (a column B_j and a row C_j), alpha_j = B_j.C_j/|C_j|^2
+     * and A D (see above); energy_form is false if some B_j is not
+     * proportional to C_j^T or -A D has a negative eigenvalue.
+     */
+    struct EnergyBorder
+    {
+      std::vector<unsigned int>  kept;
+      std::vector<double>        alpha;
+      dealii::FullMatrix<double> AD;
+      bool                       energy_form = true;
+      unsigned int
+      size() const
+      {
+        return kept.size();
+      }
+    };
+    EnergyBorder
+    energy_border(const BorderCoupling &c);
+
+    /// |y.Kx - x.Ky| / (|Kx| |y|) for two fixed vectors (0: symmetric).
+    double
+    asymmetry(const LA::SparseMatrix &K, const dealii::IndexSet &owned);
+
+    /// Number of negative eigenvalues of the symmetric part of @p S
+    /// (entries below 1e-8 of the largest count as zero).
+    long long
+    negative_eigenvalues(const dealii::FullMatrix<double> &S);
 
     /// Computes StabilityReport for converged states of a model.
     class StabilityCheck

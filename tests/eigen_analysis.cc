@@ -1,0 +1,251 @@
+// Eigen analysis of converged states (solvers/eigen_analysis.h,
+// doc/verification.md "Eigen analysis"):
+//  - modal, a taut string: a tension-only cable (L = 1 m, T = 1 kN, steel
+//    rod of radius 5 mm) between fixed ends; its transverse frequencies
+//    f_n = n/(2L) sqrt(T/(rho A)), each twice (two planes), on 20 and 40
+//    elements: within 0.5 % on 40 and of order 2 (consistent linear mass:
+//    f_h/f = 1 + (n pi h/L)^2/24 + ...);
+//  - modal, a pretensioned square membrane: side a = 1 m, h = 1 mm,
+//    St. Venant-Kirchhoff E = 1 MPa, nu = 0.3, rho = 1000 kg/m^3, its edges
+//    pulled out by 1 % in both directions: the isotropic membrane force
+//    N = E h/(1 - nu) ((1.01^2 - 1)/2) (per reference length, with the
+//    reference mass rho h) gives f_mn = (1/2) sqrt(N/(rho h))
+//    sqrt(m^2 + n^2)/a; the first six modes (1,1), (1,2), (2,1), (2,2),
+//    (1,3), (3,1) within 0.5 % (Q2, 8 x 8 cells);
+//  - linear buckling, a cantilever column: a solid beam (circular section,
+//    a = 10 mm, E = 200 GPa, nu = 0), clamped at x = 0, under an axial end
+//    force P_ref t; the buckling analysis at t = 1 (P_ref = 1 kN) predicts
+//    the critical time t + lambda with P_cr = pi^2 E I/(4 L^2) within 1 %,
+//    the first two modes equal (a circular section buckles in any plane).
+//  - tangent, the neo-Hookean balloon of V3 at l = 3, past its pressure
+//    maximum at l = 7^(1/6): under prescribed pressure (reached by arc
+//    length, parameter_files/sphere_arc_length.prm) the lowest eigenvalue
+//    is negative and the only one below zero (the breathing mode; 1 by
+//    Sylvester's count); sealed with its gas amount, the rank-one gas
+//    term makes every eigenvalue positive (the chamber term in the
+//    eigenproblem).
+// Each case also checks ARPACK's residual and, for the shift-and-invert
+// cases, that no eigenvalue lies below the shift (Sylvester's count from
+// the same factorization).
+
+#include "test_paths.h"
+#include "test_tools.h"
+
+#include <cmath>
+#include <string>
+
+namespace
+{
+  std::string
+  number(const double x)
+  {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.15g", x);
+    return buffer;
+  }
+
+  /// Exit code, ARPACK's residual, and (shift-and-invert) no eigenvalue
+  /// below the shift.
+  bool
+  common_checks(const pneuma::RunResult &s,
+                const std::string       &name,
+                const bool               count     = true,
+                const double             tolerance = 1e-6)
+  {
+    const double residual = s.get("eigen_residual");
+    const double below    = count ? s.get("eigen_below_shift") : 0.;
+    const bool   ok = s.exit_code == 0 && residual < tolerance && below == 0.;
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::printf("%s: exit code %d, largest relative residual of the modes "
+                  "%s %.0e%s %s\n",
+                  name.c_str(),
+                  s.exit_code,
+                  residual < tolerance ? "below" : "above",
+                  tolerance,
+                  count ? (below == 0. ? ", no eigenvalue below the shift"
+                                       : ", eigenvalues below the shift")
+                        : "",
+                  ok ? "PASS" : "FAIL");
+    return ok;
+  }
+
+  /// The taut string on @p n elements; returns the worst error of the
+  /// first three transverse frequencies (each of the two planes).
+  double
+  string_error(const unsigned int n, bool &ok)
+  {
+    const double L = 1., T = 1e3, a = 5e-3, rho = 7850.;
+    const double A         = M_PI * a * a,
+                 f1        = 1. / (2. * L) * std::sqrt(T / (rho * A));
+    const auto        s    = pneuma_test::run({
+                {"Geometry/Type", "none"},
+                {"Cables/Number of cables", "1"},
+                {"Cables/Cable 1/Element", "cable"},
+                {"Cables/Cable 1/polyline/Points", "0, 0, 0; 1, 0, 0"},
+                {"Cables/Cable 1/Number of elements", std::to_string(n)},
+                {"Cables/Cable 1/Section semi-axes", number(a) + ", " + number(a)},
+                {"Cables/Cable 1/Young's modulus", "2e11"},
+                {"Cables/Cable 1/Density", number(rho)},
+                {"Cables/Cable 1/Prestress force", number(T)},
+                {"Cables/Cable 1/Start support", "fixed"},
+                {"Cables/Cable 1/End support", "fixed"},
+                {"Eigen analysis/Type", "modal"},
+                {"Eigen analysis/Number of modes", "6"},
+    });
+    const std::string name = "string, " + std::to_string(n) + " elements";
+    ok                     = common_checks(s, name) && ok;
+    double worst           = 0.;
+    for (unsigned int k = 1; k <= 6; ++k)
+      {
+        const double reference = f1 * ((k + 1) / 2);
+        const double value = s.get("mode" + std::to_string(k) + "_frequency");
+        worst              = std::max(worst, std::abs(value / reference - 1.));
+        if (n == 40)
+          ok = pneuma_test::check(name + ": f of mode " + std::to_string(k)
+                                    + " [Hz]",
+                                  value,
+                                  reference,
+                                  5e-3)
+               && ok;
+      }
+    return worst;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const bool                               root =
+    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  bool ok = true;
+
+  // The taut string, and the order of its frequency error.
+  {
+    const double e20 = string_error(20, ok), e40 = string_error(40, ok);
+    const double order = std::log2(e20 / e40);
+    if (root)
+      std::printf("string: worst frequency error %.2e (20 elements), %.2e "
+                  "(40); order %.2f (reference 2, at least 1.9) %s\n",
+                  e20,
+                  e40,
+                  order,
+                  order > 1.9 ? "PASS" : "FAIL");
+    ok = ok && order > 1.9;
+  }
+
+  // The pretensioned square membrane.
+  {
+    const double E = 1e6, nu = 0.3, h = 1e-3, rho = 1000., eps = 0.01, a = 1.;
+    const double N = E * h / (1. - nu) * ((1. + eps) * (1. + eps) - 1.) / 2.;
+    const double c = 0.5 * std::sqrt(N / (rho * h)) / a;
+    const auto   s = pneuma_test::run({
+        {"Geometry/Type", "square"},
+        {"Geometry/square/Side length", "1"},
+        {"Geometry/Global refinements", "3"},
+        {"Discretisation/Polynomial degree", "2"},
+        {"Materials/Region 0/Thickness", number(h)},
+        {"Materials/Region 0/Density", number(rho)},
+        {"Materials/Region 0/Saint Venant-Kirchhoff/Young's modulus", number(E)},
+        {"Materials/Region 0/Saint Venant-Kirchhoff/Poisson's ratio", number(nu)},
+        {"Boundary conditions/Prescribed displacement boundaries", "0, 1, 2, 3"},
+        {"Boundary conditions/Prescribed displacement/Function expression",
+         number(eps) + "*x*t; " + number(eps) + "*y*t; 0"},
+        {"Eigen analysis/Type", "modal"},
+        {"Eigen analysis/Number of modes", "6"},
+    });
+    ok             = common_checks(s, "square membrane") && ok;
+    const double mn[6] = {2., 5., 5., 8., 10., 10.};
+    for (unsigned int k = 1; k <= 6; ++k)
+      ok = pneuma_test::check("square membrane: f of mode " + std::to_string(k)
+                                + " [Hz]",
+                              s.get("mode" + std::to_string(k) + "_frequency"),
+                              c * std::sqrt(mn[k - 1]),
+                              5e-3)
+           && ok;
+  }
+
+  // Linear buckling of the cantilever column.
+  {
+    const double E = 2e11, a = 0.01, L = 1., P = 1e3;
+    const double I    = M_PI * std::pow(a, 4) / 4.,
+                 P_cr = M_PI * M_PI * E * I / (4. * L * L);
+    const auto s      = pneuma_test::run({
+           {"Geometry/Type", "none"},
+           {"Cables/Number of cables", "1"},
+           {"Cables/Cable 1/Element", "solid beam"},
+           {"Cables/Cable 1/polyline/Points", "0, 0, 0; 1, 0, 0"},
+           {"Cables/Cable 1/Number of elements", "16"},
+           {"Cables/Cable 1/Section semi-axes", number(a) + ", " + number(a)},
+           {"Cables/Cable 1/solid beam/Section axis", "0, 0, 1"},
+           {"Cables/Cable 1/Young's modulus", number(E)},
+           {"Cables/Cable 1/solid beam/Poisson's ratio", "0"},
+           {"Cables/Cable 1/Start support", "fixed"},
+           {"Cables/Cable 1/End forces", "true"},
+           {"Cables/Cable 1/End force/Function expression",
+            number(-P) + " * t; 0; 0"},
+           {"Eigen analysis/Type", "buckling"},
+           {"Eigen analysis/Number of modes", "2"},
+    });
+    ok                = common_checks(s, "cantilever column", false) && ok;
+    for (unsigned int k = 1; k <= 2; ++k)
+      ok = pneuma_test::check(
+             "cantilever column: critical load of mode " + std::to_string(k)
+               + " [N]",
+             P * s.get("mode" + std::to_string(k) + "_critical_time"),
+             P_cr,
+             1e-2)
+           && ok;
+  }
+  // The balloon past its pressure maximum: prescribed pressure against a
+  // sealed gas amount.
+  {
+    pneuma_test::Settings quiet = pneuma_test::quiet();
+    quiet.insert(quiet.end(),
+                 {{"Eigen analysis/Type", "tangent"},
+                  {"Eigen analysis/Number of modes", "3"},
+                  {"Stability/Check inertia", "false"},
+                  {"Output/Quiet", "true"},
+                  {"Output/Write VTU", "false"},
+                  {"Output/Directory", "output-eigen-pressure"}});
+    const auto pressure =
+      pneuma_test::make(quiet,
+                        std::string(PNEUMA_SOURCE_DIR)
+                          + "/parameter_files/sphere_arc_length.prm")
+        ->run();
+    pneuma_test::Settings gas = pneuma_test::neo_hookean_sphere_chamber();
+    gas.insert(gas.end(),
+               {{"Chambers/Chamber 1/Gas/Control", "gas amount"},
+                {"Chambers/Chamber 1/Gas/Gas amount/Function expression",
+                 pneuma_test::balloon_gas_amount()},
+                {"Eigen analysis/Type", "tangent"},
+                {"Eigen analysis/Number of modes", "3"},
+                {"Output/Directory", "output-eigen-gas"}});
+    const auto sealed = pneuma_test::run(gas);
+    ok = common_checks(pressure, "balloon under pressure", false) && ok;
+    ok = common_checks(sealed, "sealed balloon") && ok;
+    const double l_p       = 1. + pressure.get("m0_u_z");
+    const double below_p   = pressure.get("eigen_below_shift");
+    const double lambda_p1 = pressure.get("mode1_eigenvalue");
+    const double lambda_p2 = pressure.get("mode2_eigenvalue");
+    const double lambda_g1 = sealed.get("mode1_eigenvalue");
+    const bool pressure_ok = below_p == 1. && lambda_p1 < 0. && lambda_p2 > 0.;
+    const bool gas_ok      = lambda_g1 > 0.;
+    if (root)
+      {
+        std::printf("balloon at l = %.3f under pressure: eigenvalues below 0: "
+                    "reference 1 value %g; lowest %.3e N/m, next %.3e N/m %s\n",
+                    l_p,
+                    below_p,
+                    lambda_p1,
+                    lambda_p2,
+                    pressure_ok ? "PASS" : "FAIL");
+        std::printf("sealed balloon at l = 3: lowest eigenvalue %.3e N/m "
+                    "(reference: positive) %s\n",
+                    lambda_g1,
+                    gas_ok ? "PASS" : "FAIL");
+      }
+    ok = ok && pressure_ok && gas_ok;
+  }
+  return ok ? 0 : 1;
+}
