@@ -244,6 +244,7 @@ eigen_fails eigen-unconverged "the eigen analysis failed: ARPACK did not find" -
 # Stability entries.
 check "$dir/valid.prm"              1 "Stability/Locate critical points: The string <2> does not match" --set "Stability/Locate critical points=2"
 check "$dir/valid.prm"              1 "Stability/Check inertia: The string <maybe> does not match" --set "Stability/Check inertia=maybe"
+check "$dir/valid.prm"              1 "Stability/Branch switching: needs the located bifurcation: Stability/Check inertia = true and Stability/Locate critical points > 0" --set "Stability/Branch switching=true" --set "Stability/Locate critical points=0"
 # Checkpoints: missing, damaged, of another scene, not allowed.
 check --restart                     1 "--restart needs a checkpoint directory" "$dir/valid.prm"
 check "$dir/valid.prm"              1 "--restart /nonexistent: cannot open '/nonexistent/state.bin' (is it a checkpoint directory?)" --restart /nonexistent

@@ -25,33 +25,8 @@ namespace
   pneuma::RunResult
   balloons(const pneuma_test::Settings &control)
   {
-    pneuma_test::Settings s = {{"Geometry/Type", "gmsh"},
-                               {"Geometry/gmsh/Mesh file",
-                                std::string(PNEUMA_SOURCE_DIR)
-                                  + "/meshes/two_spheres.msh"},
-                               {"Geometry/Global refinements", "0"},
-                               {"Discretisation/Polynomial degree", "2"},
-                               {"Boundary conditions/Fixed points",
-                                "0,0,1: xy; 0,0,-1: xy; 1,0,0: yz; -1,0,0: yz; "
-                                "3,0,1: xy; 3,0,-1: xy; 4,0,0: yz; 2,0,0: yz"},
-                               {"Chambers/Number of chambers", "2"},
-                               {"Chambers/Chamber 1/Regions", "0"},
-                               {"Chambers/Chamber 1/Interior point", "0, 0, 0"},
-                               {"Chambers/Chamber 2/Regions", "1"},
-                               {"Chambers/Chamber 2/Interior point", "3, 0, 0"},
-                               {"Chambers/Chamber 2/Filling", "connected"},
-                               {"Chambers/Chamber 2/Connected to", "1"},
-                               {"Load stepping/Stage end times", "1"},
-                               {"Load stepping/Initial increment", "0.1"},
-                               {"Stability/Check inertia", "true"},
-                               {"Output/Directory", "output-two-balloons"}};
-    for (const std::string r : {"0", "1"})
-      {
-        s.push_back({"Materials/Region " + r + "/Law", "neo-Hookean"});
-        s.push_back({"Materials/Region " + r + "/Thickness", "1e-3"});
-        s.push_back(
-          {"Materials/Region " + r + "/neo-Hookean/Shear modulus", "1e6"});
-      }
+    pneuma_test::Settings s = pneuma_test::two_connected_balloons();
+    s.push_back({"Output/Directory", "output-two-balloons"});
     s.insert(s.end(), control.begin(), control.end());
     return pneuma_test::run(s);
   }

@@ -6,6 +6,8 @@
 // with its reference, printing the reference, the value and the relative
 // error at fixed precision.
 
+#include "test_paths.h"
+
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
@@ -138,6 +140,43 @@ namespace pneuma_test
   balloon_gas_amount()
   {
     return "(1+t)^3*(1+2000*(1/(1+t)-1/(1+t)^7)/101325)^(1/1.4)";
+  }
+
+  /**
+   * Two such balloons (unit spheres of meshes/two_spheres.msh, Q2,
+   * mu = 1 MPa, H = 1 mm) connected into one chamber group, chamber 1
+   * controlling it (its control comes from the caller), one stage to
+   * t = 1 from increments of 0.1, with the stability check.
+   */
+  inline Settings
+  two_connected_balloons()
+  {
+    Settings s = {{"Geometry/Type", "gmsh"},
+                  {"Geometry/gmsh/Mesh file",
+                   std::string(PNEUMA_SOURCE_DIR) + "/meshes/two_spheres.msh"},
+                  {"Geometry/Global refinements", "0"},
+                  {"Discretisation/Polynomial degree", "2"},
+                  {"Boundary conditions/Fixed points",
+                   "0,0,1: xy; 0,0,-1: xy; 1,0,0: yz; -1,0,0: yz; "
+                   "3,0,1: xy; 3,0,-1: xy; 4,0,0: yz; 2,0,0: yz"},
+                  {"Chambers/Number of chambers", "2"},
+                  {"Chambers/Chamber 1/Regions", "0"},
+                  {"Chambers/Chamber 1/Interior point", "0, 0, 0"},
+                  {"Chambers/Chamber 2/Regions", "1"},
+                  {"Chambers/Chamber 2/Interior point", "3, 0, 0"},
+                  {"Chambers/Chamber 2/Filling", "connected"},
+                  {"Chambers/Chamber 2/Connected to", "1"},
+                  {"Load stepping/Stage end times", "1"},
+                  {"Load stepping/Initial increment", "0.1"},
+                  {"Stability/Check inertia", "true"}};
+    for (const std::string r : {"0", "1"})
+      {
+        s.push_back({"Materials/Region " + r + "/Law", "neo-Hookean"});
+        s.push_back({"Materials/Region " + r + "/Thickness", "1e-3"});
+        s.push_back(
+          {"Materials/Region " + r + "/neo-Hookean/Shear modulus", "1e6"});
+      }
+    return s;
   }
 
   /// |reactions + applied loads| / |applied vertical load| of a run: zero

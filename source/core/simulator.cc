@@ -62,6 +62,7 @@ namespace pneuma
     bool                                     check_stability = true;
     std::unique_ptr<solvers::StabilityCheck> stability;
     solvers::StabilityReport                 last_stability;
+    bool                                     branch_switching = false;
     /// The eigen analysis of the final state (solvers/eigen_analysis.h).
     solvers::EigenParameters eigen;
     solvers::EigenResult     eigen_result;
@@ -120,6 +121,15 @@ namespace pneuma
       "fraction of the step (each probe is a Newton solve from the earlier "
       "state); 0: do not locate.",
       Patterns::Double(0., 1.));
+    prm.add_parameter(
+      "Branch switching",
+      impl->branch_switching,
+      "At the first located bifurcation point, leave the primary path for "
+      "the secondary branch: the state just past the point is perturbed "
+      "along the critical mode (the eigenvector of the negative eigenvalue "
+      "nearest zero) by the last step's displacement norm, then 3, 9 and 27 "
+      "times it, each solved at the same load, until a state with fewer "
+      "negative eigenvalues is found; the path goes on from there.");
     prm.leave_subsection();
   }
 
@@ -139,6 +149,12 @@ namespace pneuma
                 "adaptive refinement studies (Adaptive refinement/Cycles > "
                 "0) cannot be checkpointed; run the cycles again instead");
     impl->path.stop_after(impl->checkpoints.stop_after());
+    check_input(!impl->branch_switching
+                  || (impl->check_stability && impl->locate_tolerance > 0.),
+                "Stability/Branch switching",
+                "needs the located bifurcation: Stability/Check inertia = "
+                "true and Stability/Locate critical points > 0");
+    impl->path.set_branch_switching(impl->branch_switching);
     if (impl->check_stability)
       {
         Impl &s = *impl;
@@ -575,6 +591,11 @@ namespace pneuma
         row.add_count(g, "negative_after", c.after, counts);
         if (path.follows_path())
           row.add(g, "monitor", "m", c.monitor, counts);
+        if (branch_switching && c.type == "bifurcation")
+          {
+            row.add_count(g, "switched", c.switched, counts);
+            row.add(g, "switch_amplitude", "m", c.amplitude, counts);
+          }
       }
     if (eigen_result.computed)
       {

@@ -2,6 +2,7 @@
 #include <pneuma/core/interrupt.h>
 #include <pneuma/core/model.h>
 #include <pneuma/membrane/membrane_subsystem.h>
+#include <pneuma/solvers/eigen_analysis.h>
 #include <pneuma/solvers/load_path.h>
 
 #include <algorithm>
@@ -186,6 +187,66 @@ namespace pneuma
       c.time    = 0.5 * (lo + hi);
       c.bracket = hi - lo;
       return c;
+    }
+
+    bool
+    StaticLoadPath::switch_branch(Model                    &model,
+                                  BorderedVector           &state,
+                                  const double              t,
+                                  const double              amplitude,
+                                  StabilityReport          &stability,
+                                  CriticalPoint            &c,
+                                  const ConditionalOStream &out)
+    {
+      // The critical mode: the negative eigenvalue nearest zero (the one
+      // that just crossed it).
+      model.current_time = t;
+      EigenParameters p;
+      p.type              = "tangent";
+      p.n_modes           = 1;
+      p.write_modes       = false;
+      const EigenResult e = EigenAnalysis::run(model, state, p);
+      if (!e.computed || e.values.empty() || e.values[0] >= 0.)
+        {
+          out << "  branch switching: no critical mode ("
+              << (e.computed ? "no negative eigenvalue" : e.error)
+              << "); the path stays on the primary branch" << std::endl;
+          return false;
+        }
+      LA::Vector phi(e.modes[0]);
+      model.constraints().distribute(phi);
+      phi /= phi.l2_norm();
+      const ConditionalOStream quiet(std::cout, false);
+      double                   xi = amplitude > 0. ? amplitude : 1e-3;
+      for (unsigned int attempt = 0; attempt < 4; ++attempt, xi *= 3.)
+        {
+          BorderedVector probe(state);
+          probe.field.add(xi, phi);
+          const auto newton = newton_solver.solve(model, probe, quiet, false);
+          if (!newton.converged || !model.check_state(probe).empty())
+            continue;
+          const StabilityReport r = stability_judge(probe);
+          if (!r.computed || r.negative < 0 || r.negative >= stability.negative)
+            continue;
+          LA::Vector away(probe.field);
+          away -= state.field;
+          c.switched           = true;
+          c.amplitude          = away.l2_norm();
+          c.negative_secondary = r.negative;
+          out << "  branch switching: along the critical mode (eigenvalue "
+              << e.values[0] << " N/m), perturbation " << xi
+              << ": on the secondary branch at |u - u_primary| = "
+              << c.amplitude << ", negative eigenvalues " << stability.negative
+              << " -> " << r.negative << std::endl;
+          state     = probe;
+          stability = r;
+          return true;
+        }
+      out << "  branch switching: no perturbation up to " << xi / 3.
+          << " along the critical mode left the primary branch; the path "
+             "stays on it"
+          << std::endl;
+      return false;
     }
 
     CriticalPoint
@@ -609,7 +670,7 @@ namespace pneuma
           // The stability of the converged state, before it is committed;
           // a change of the count is located between the two states.
           StabilityReport stability;
-          bool            limit_located = false;
+          bool            limit_located = false, switched = false;
           if (newton.converged && stability_judge)
             {
               stability = stability_judge(result.state);
@@ -665,6 +726,26 @@ namespace pneuma
                       << " (+-" << 0.5 * c.bracket << "), negative eigenvalues "
                       << c.before << " -> " << c.after << ", " << c.probes
                       << " probes" << std::endl;
+                  // The first bifurcation: onto the secondary branch.
+                  const bool first_bifurcation =
+                    std::none_of(result.critical_points.begin(),
+                                 result.critical_points.end(),
+                                 [](const CriticalPoint &p) {
+                                   return p.type == "bifurcation";
+                                 });
+                  if (branch_switching && c.type == "bifurcation"
+                      && first_bifurcation)
+                    {
+                      LA::Vector step_field(result.state.field);
+                      step_field -= last.field;
+                      switched = switch_branch(model,
+                                               result.state,
+                                               t_new,
+                                               step_field.l2_norm(),
+                                               stability,
+                                               c,
+                                               out);
+                    }
                   result.critical_points.push_back(c);
                 }
             }
@@ -773,7 +854,11 @@ namespace pneuma
                 }
               if (dtau != 0.)
                 current.last_dtau = dtau;
-              if (reached == Forced::none)
+              // After a branch switch the next predictor is the tangent
+              // of the secondary branch, not the secant across branches.
+              if (switched)
+                previous_increment = BorderedVector();
+              else if (reached == Forced::none)
                 previous_increment = step;
             }
           out << "  converged in " << newton.iterations << " iterations ("

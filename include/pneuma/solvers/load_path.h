@@ -75,12 +75,20 @@ namespace pneuma
       /// The monitored component (Load stepping/Path following) there; NaN
       /// without a monitor.
       double monitor = 0.;
+      /// Branch switching (Stability/Branch switching): the path left the
+      /// bifurcation on the secondary branch, at the mode amplitude
+      /// @p amplitude (|u - u_primary|) with this count of negative
+      /// eigenvalues.
+      bool      switched           = false;
+      double    amplitude          = 0.;
+      long long negative_secondary = 0;
 
       template <class Archive>
       void
       serialize(Archive &ar, const unsigned int)
       {
-        ar &step &time &bracket &before &after &probes &type &monitor;
+        ar &step &time &bracket &before &after &probes &type &monitor &switched
+          &amplitude &negative_secondary;
       }
     };
 
@@ -198,6 +206,14 @@ namespace pneuma
         locate_tolerance = tolerance;
       }
 
+      /// At the first located bifurcation point, leave the primary path
+      /// for the secondary branch (see switch_branch()).
+      void
+      set_branch_switching(const bool on)
+      {
+        branch_switching = on;
+      }
+
       const NewtonSolver &
       newton() const
       {
@@ -237,8 +253,30 @@ namespace pneuma
       unsigned int stop_step = 0;
       Judge        stability_judge;
       double       locate_tolerance = 0.;
+      bool         branch_switching = false;
       /// The count of the last accepted state (for a restart too).
       StabilityReport previous_stability;
+
+      /**
+       * Branch switching at a located bifurcation: the converged @p state
+       * at pseudo time @p t, just past it on the primary path with
+       * @p negative negative eigenvalues, is perturbed along the critical
+       * mode phi (the eigenvector of the negative eigenvalue nearest zero
+       * of the tangent with its chamber terms, solvers/eigen_analysis.h;
+       * unit l2 norm) by amplitudes xi = @p amplitude, 3 xi, 9 xi, 27 xi,
+       * each solved by Newton at the same load; the first solution with
+       * fewer negative eigenvalues is on the secondary branch and replaces
+       * @p state (with its report @p stability). Returns whether it did;
+       * @p c records it.
+       */
+      bool
+      switch_branch(Model                    &model,
+                    BorderedVector           &state,
+                    const double              t,
+                    const double              amplitude,
+                    StabilityReport          &stability,
+                    CriticalPoint            &c,
+                    const ConditionalOStream &out);
 
       /// Bisect [t_old, t_new] for the change of the count from
       /// @p before to @p after; Newton solves from @p last (quietly).
