@@ -594,6 +594,23 @@ namespace pneuma
                   factor = dt / std::max(problem.arc_length(direction), 1e-300);
                   problem.set_constraint(Control::arc_length, x_last, size);
                 }
+              // The load factor changes by at most the maximum increment
+              // per step; the arc length itself is free to grow where the
+              // load hardly changes (past a limit or bifurcation point,
+              // where the path's scale of the stage start is far too
+              // small).
+              const double dtau_predicted =
+                factor * PathConstraintProblem::load_factor(direction);
+              if (forced != Forced::to_target
+                  && std::abs(dtau_predicted) > stepping.maximum())
+                {
+                  const double s =
+                    stepping.maximum() / std::abs(dtau_predicted);
+                  dt *= s;
+                  size *= s;
+                  factor *= s;
+                  problem.set_size(size);
+                }
               x = x_last;
               x.add(factor, direction);
               predictor = x;
@@ -865,8 +882,8 @@ namespace pneuma
               << newton.convergence_test << "), wall " << std::fixed
               << std::setprecision(2) << wall_clock.wall_time() << " s"
               << std::defaultfloat << std::setprecision(6) << std::endl;
-          dt =
-            stepping.grown(path_step ? dt : t_new - t_old, newton.iterations);
+          dt = path_step ? stepping.grown(dt, newton.iterations, false)
+                         : stepping.grown(t_new - t_old, newton.iterations);
           PathStep report{result.steps,
                           t_new,
                           newton.iterations,

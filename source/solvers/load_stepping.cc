@@ -27,10 +27,13 @@ namespace pneuma
                         "The run stops (exit 2) when a cut back would go "
                         "below this; > 0.",
                         Patterns::Double(0.));
-      prm.add_parameter("Maximum increment",
-                        maximum_increment,
-                        "Largest pseudo-time increment; > 0.",
-                        Patterns::Double(0.));
+      prm.add_parameter(
+        "Maximum increment",
+        maximum_increment,
+        "Largest pseudo-time increment; > 0. In a path-controlled "
+        "stage: the largest change of the load factor per "
+        "step (the arc length grows freely).",
+        Patterns::Double(0.));
       prm.add_parameter("Growth factor",
                         growth_factor,
                         "Increment growth after an easy step.",
@@ -91,11 +94,14 @@ namespace pneuma
     }
 
     double
-    LoadStepping::grown(const double dt, const unsigned int iterations) const
+    LoadStepping::grown(const double       dt,
+                        const unsigned int iterations,
+                        const bool         capped) const
     {
-      return (iterations <= easy_iterations)
-               ? std::min(dt * growth_factor, maximum_increment)
-               : dt;
+      if (iterations > easy_iterations)
+        return dt;
+      return capped ? std::min(dt * growth_factor, maximum_increment)
+                    : dt * growth_factor;
     }
 
     bool

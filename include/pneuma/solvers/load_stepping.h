@@ -60,9 +60,13 @@ namespace pneuma
       /// stepping over a stage end.
       double
       next_time(const double t, const double dt) const;
-      /// Increment after a converged step with @p iterations.
+      /// Increment after a converged step with @p iterations (at most
+      /// the maximum increment if @p capped: a path-controlled stage caps
+      /// the load factor's change instead, not its arc length).
       double
-      grown(const double dt, const unsigned int iterations) const;
+      grown(const double       dt,
+            const unsigned int iterations,
+            const bool         capped = true) const;
       /// Increment after a failed step.
       double
       cut(const double dt) const
@@ -78,6 +82,11 @@ namespace pneuma
       minimum() const
       {
         return minimum_increment;
+      }
+      double
+      maximum() const
+      {
+        return maximum_increment;
       }
       /// True if @p t is (numerically) at or beyond the end.
       bool
