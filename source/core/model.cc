@@ -467,6 +467,20 @@ namespace pneuma
     mode_fields.clear();
   }
 
+  LA::Vector
+  Model::rigid_translation(const unsigned int c) const
+  {
+    std::vector<std::vector<double>> modes(
+      6, std::vector<double>(owned.n_elements(), 0.));
+    for (const auto &s : subsystems)
+      s->add_near_null_space(owned, modes);
+    LA::Vector r(owned, comm);
+    for (unsigned int k = 0; k < owned.n_elements(); ++k)
+      r[owned.nth_index_in_set(k)] = modes[c][k];
+    r.compress(VectorOperation::insert);
+    return r;
+  }
+
   void
   Model::set_output_modes(const std::vector<std::string> &names,
                           const std::vector<LA::Vector>  &modes)

@@ -605,6 +605,8 @@ namespace pneuma
                       counts);
         row.add_count(run, "eigen_iterations", eigen_result.iterations, counts);
         row.add(run, "eigen_residual", "", eigen_result.residual, counts);
+        if (eigen.type == "modal")
+          row.add(run, "modal_mass", "kg", eigen_result.total_mass, counts);
         for (unsigned int k = 0; k < eigen_result.values.size(); ++k)
           {
             const double          v = eigen_result.values[k];
@@ -619,6 +621,10 @@ namespace pneuma
                         "Hz",
                         solvers::EigenAnalysis::frequency(v),
                         counts);
+                const auto &e = eigen_result.effective_mass[k];
+                row.add(g, "effective_mass_x", "kg", e[0], counts);
+                row.add(g, "effective_mass_y", "kg", e[1], counts);
+                row.add(g, "effective_mass_z", "kg", e[2], counts);
               }
             else
               {

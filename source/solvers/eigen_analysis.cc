@@ -695,6 +695,33 @@ namespace pneuma
                 relative_residual(rate_op, K_c, inverse, mu, result.modes);
             }
 
+          // Modal: effective masses (the mass that moves with each mode
+          // under a base motion along x, y, z).
+          if (p.type == "modal")
+            {
+              LA::SparseMatrix M;
+              model.assemble_mass(M);
+              std::array<LA::Vector, 3> Mr;
+              for (unsigned int d = 0; d < 3; ++d)
+                {
+                  const LA::Vector r = model.rigid_translation(d);
+                  Mr[d].reinit(r);
+                  M.vmult(Mr[d], r);
+                  if (d == 0)
+                    result.total_mass = r * Mr[d];
+                }
+              for (const auto &phi : result.modes)
+                {
+                  LA::Vector Mphi(phi);
+                  M.vmult(Mphi, phi);
+                  const double          m = phi * Mphi;
+                  std::array<double, 3> e;
+                  for (unsigned int d = 0; d < 3; ++d)
+                    e[d] = m > 0. ? std::pow(phi * Mr[d], 2) / m : 0.;
+                  result.effective_mass.push_back(e);
+                }
+            }
+
           // Ascending values (buckling: positive factors first), unit
           // largest component.
           std::vector<unsigned int> order(result.values.size());
@@ -708,16 +735,20 @@ namespace pneuma
           std::sort(order.begin(), order.end(), [&](unsigned a, unsigned b) {
             return key(a) < key(b);
           });
-          std::vector<double>     values;
-          std::vector<LA::Vector> modes;
+          std::vector<double>                values;
+          std::vector<LA::Vector>            modes;
+          std::vector<std::array<double, 3>> effective;
           for (const auto i : order)
             {
               values.push_back(result.values[i]);
               modes.push_back(result.modes[i]);
               normalize(modes.back(), owned, comm);
+              if (!result.effective_mass.empty())
+                effective.push_back(result.effective_mass[i]);
             }
-          result.values = values;
-          result.modes  = modes;
+          result.values         = values;
+          result.modes          = modes;
+          result.effective_mass = effective;
           for (const double v : result.values)
             if (!std::isfinite(v))
               throw std::runtime_error("an eigenvalue is not finite");

@@ -340,6 +340,10 @@ namespace pneuma
      */
     void
     assemble_mass(LA::SparseMatrix &M) const;
+    /// The rigid translation along axis @p c (0..2) of every subsystem
+    /// that has one (1 on the translation dofs of that component).
+    LA::Vector
+    rigid_translation(const unsigned int c) const;
     /// Mode shapes (owned vectors; their dependent dofs are filled here)
     /// to add, as fields named @p names, to the next write_output().
     void

@@ -39,6 +39,7 @@
 #include <pneuma/core/linear_algebra.h>
 #include <pneuma/solvers/bordered_vector.h>
 
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -83,6 +84,11 @@ namespace pneuma
       std::vector<double> values;
       /// The modes (owned vectors, largest component +1).
       std::vector<LA::Vector> modes;
+      /// Modal: the effective mass of each mode along x, y, z,
+      /// (phi^T M r)^2 / (phi^T M phi) with r the rigid translation [kg],
+      /// and the model's mass r^T M r.
+      std::vector<std::array<double, 3>> effective_mass;
+      double                             total_mass = 0.;
       /// Eigenvalues of the pencil below the shift (Sylvester; -1: not
       /// known), and the pseudo time of the state.
       long long below_shift = -1;
