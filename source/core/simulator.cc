@@ -605,6 +605,16 @@ namespace pneuma
                       counts);
         row.add_count(run, "eigen_iterations", eigen_result.iterations, counts);
         row.add(run, "eigen_residual", "", eigen_result.residual, counts);
+        row.add_count(run,
+                      "eigen_substitutions",
+                      eigen_result.substitutions,
+                      counts);
+        row.add(run,
+                "eigen_factorization_seconds",
+                "s",
+                eigen_result.factorization_seconds,
+                counts);
+        row.add(run, "eigen_seconds", "s", eigen_result.seconds, counts);
         if (eigen.type == "modal")
           row.add(run, "modal_mass", "kg", eigen_result.total_mass, counts);
         for (unsigned int k = 0; k < eigen_result.values.size(); ++k)

@@ -217,6 +217,7 @@ namespace pneuma
         void
         vmult(LA::Vector &x, const LA::Vector &y) const
         {
+          ++solves;
           const Vector<double> b(y); // every entry, on every rank
           Vector<double>       z(b.size());
           factorization.solve(b, z);
@@ -235,8 +236,38 @@ namespace pneuma
           x.compress(VectorOperation::insert);
         }
 
+        /// x_j = (K_c - sigma B)^{-1} y_j for all j in one MUMPS solve.
+        void
+        vmult(std::vector<LA::Vector>       &x,
+              const std::vector<LA::Vector> &y) const
+        {
+          std::vector<Vector<double>> b, z;
+          for (const auto &v : y)
+            b.emplace_back(v); // every entry, on every rank
+          solves += y.size();
+          factorization.solve(b, z);
+          const unsigned int m = B.size();
+          for (unsigned int k = 0; k < y.size(); ++k)
+            {
+              if (m > 0)
+                {
+                  Vector<double> w(m), mu(m);
+                  for (unsigned int j = 0; j < m; ++j)
+                    w[j] = B[j] * z[k];
+                  S_inverse.vmult(mu, w);
+                  for (unsigned int j = 0; j < m; ++j)
+                    z[k].add(mu[j], Z[j]);
+                }
+              for (const auto i : owned)
+                x[k][i] = z[k][i];
+              x[k].compress(VectorOperation::insert);
+            }
+        }
+
         long long               negative    = 0;
         types::global_dof_index zero_pivots = 0;
+        /// Substitutions done (ARPACK's operator applications).
+        mutable unsigned int solves = 0;
 
       private:
         mutable SymmetricInertia    factorization;
@@ -307,8 +338,11 @@ namespace pneuma
       /**
        * The largest relative residual of the eigenpairs (mu_k, x_k) of
        * A x = mu B x, measured as the solver sees it (through the inverse
-       * of the shifted tangent, so that stiff and soft dofs weigh alike):
-       * |C (A x - mu B x)| / |C mu B x| with C = (K_c - sigma B)^{-1}.
+       * C = (K_c - sigma B)^{-1} of the shifted tangent, so that stiff and
+       * soft dofs weigh alike): |C (A x - mu B x)| / (s |x|), s = 1 for
+       * shift-and-invert (C (A - mu B) x = x - (mu - sigma) C B x) and
+       * s = |mu| for buckling's mode 2 (C = A_metric^{-1}). One MUMPS solve
+       * for all pairs.
        */
       template <typename OperatorA, typename OperatorB>
       double
@@ -316,22 +350,24 @@ namespace pneuma
                         const OperatorB               &B,
                         const ShiftedInverse          &inverse,
                         const std::vector<double>     &mu,
-                        const std::vector<LA::Vector> &modes)
+                        const std::vector<LA::Vector> &modes,
+                        const bool                     scale_by_mu)
       {
+        std::vector<LA::Vector> r(modes), cr(modes);
+        for (unsigned int k = 0; k < modes.size(); ++k)
+          {
+            LA::Vector b(modes[k]);
+            A.vmult(r[k], modes[k]);
+            B.vmult(b, modes[k]);
+            r[k].add(-mu[k], b);
+          }
+        inverse.vmult(cr, r);
         double worst = 0.;
         for (unsigned int k = 0; k < modes.size(); ++k)
           {
-            LA::Vector a(modes[k]), b(modes[k]), ca(modes[k]), cb(modes[k]);
-            A.vmult(a, modes[k]);
-            B.vmult(b, modes[k]);
-            b *= mu[k];
-            a -= b;
-            inverse.vmult(ca, a);
-            inverse.vmult(cb, b);
-            worst = std::max(worst,
-                             ca.l2_norm()
-                               / std::max(cb.l2_norm(),
-                                          1e-300 + 1e-14 * modes[k].l2_norm()));
+            const double scale =
+              (scale_by_mu ? std::abs(mu[k]) : 1.) * modes[k].l2_norm();
+            worst = std::max(worst, cr[k].l2_norm() / std::max(scale, 1e-300));
           }
         return worst;
       }
@@ -459,6 +495,7 @@ namespace pneuma
                        const EigenParameters &p)
     {
       TimerOutput::Scope t(model.timer(), "eigen analysis");
+      Timer              wall;
       EigenResult        result;
       result.type                 = p.type;
       result.time                 = model.current_time;
@@ -607,7 +644,9 @@ namespace pneuma
                       shifted.add(i, i, -sigma);
                   shifted.compress(VectorOperation::add);
                 }
+              Timer                factorizing;
               const ShiftedInverse inverse(comm, shifted, c, e, owned);
+              result.factorization_seconds = factorizing.wall_time();
               if (inverse.zero_pivots > 0)
                 throw std::runtime_error(
                   "the tangent minus the shift is singular (an eigenvalue "
@@ -623,14 +662,17 @@ namespace pneuma
               result.residual =
                 p.type == "modal"
                   ? relative_residual(
-                    K_c, M, inverse, result.values, result.modes)
+                    K_c, M, inverse, result.values, result.modes, false)
                   : relative_residual(
-                    K_c, I, inverse, result.values, result.modes);
+                    K_c, I, inverse, result.values, result.modes, false);
+              result.substitutions = inverse.solves;
             }
           else
             {
               // The base state must be stable: K_c is the metric.
+              Timer                factorizing;
               const ShiftedInverse inverse(comm, K, c, e, owned);
+              result.factorization_seconds = factorizing.wall_time();
               if (inverse.negative > 0 || inverse.zero_pivots > 0)
                 throw std::runtime_error(
                   "linear buckling needs a stable state; this one has "
@@ -691,8 +733,9 @@ namespace pneuma
                       "a buckling mode has no load factor (nu = 0)");
                   result.values.push_back(1. / nu);
                 }
-              result.residual =
-                relative_residual(rate_op, K_c, inverse, mu, result.modes);
+              result.residual = relative_residual(
+                rate_op, K_c, inverse, mu, result.modes, true);
+              result.substitutions = inverse.solves;
             }
 
           // Modal: effective masses (the mass that moves with each mode
@@ -753,6 +796,7 @@ namespace pneuma
             if (!std::isfinite(v))
               throw std::runtime_error("an eigenvalue is not finite");
           result.computed = true;
+          result.seconds  = wall.wall_time();
         }
       catch (const std::exception &e)
         {

@@ -119,6 +119,42 @@ namespace pneuma
       return result;
     }
     void
+    SymmetricInertia::solve(const std::vector<dealii::Vector<double>> &b,
+                            std::vector<dealii::Vector<double>>       &x)
+    {
+      Data           &d    = *data;
+      DMUMPS_STRUC_C &id   = d.id;
+      const MPI_Comm  comm = MPI_Comm_f2c(id.comm_fortran);
+      const bool host = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+      x.resize(b.size());
+      if (b.empty())
+        return;
+      // All right-hand sides in one column-major block on the host: one
+      // pass over the factors for all of them.
+      const std::size_t   n = b[0].size();
+      std::vector<double> block(host ? n * b.size() : 0);
+      if (host)
+        for (std::size_t j = 0; j < b.size(); ++j)
+          std::copy(b[j].begin(), b[j].end(), block.begin() + j * n);
+      id.icntl[19] = 0;
+      id.icntl[20] = 0;
+      id.nrhs      = static_cast<MUMPS_INT>(b.size());
+      id.lrhs      = static_cast<MUMPS_INT>(n);
+      id.rhs       = host ? block.data() : nullptr;
+      d.call(3);
+      id.nrhs = 1;
+      for (std::size_t j = 0; j < b.size(); ++j)
+        {
+          x[j].reinit(n);
+          if (host)
+            std::copy(block.begin() + j * n,
+                      block.begin() + (j + 1) * n,
+                      x[j].begin());
+          x[j] = dealii::Utilities::MPI::broadcast(comm, x[j], 0);
+        }
+    }
+
+    void
     SymmetricInertia::solve(const dealii::Vector<double> &b,
                             dealii::Vector<double>       &x)
     {

@@ -97,6 +97,13 @@ namespace pneuma
       /// |A phi - lambda B phi| / (|A phi| + |lambda B phi|) of the modes.
       unsigned int iterations = 0;
       double       residual   = 0.;
+      /// Substitutions with the factorization (ARPACK's operator
+      /// applications and the residual check), the wall time of the
+      /// factorization (with the chamber Schur complement) and of the
+      /// whole analysis [s].
+      unsigned int substitutions         = 0;
+      double       factorization_seconds = 0.;
+      double       seconds               = 0.;
       /// Why it was not computed (empty: it was).
       std::string error;
     };

@@ -30,6 +30,7 @@
 #include <pneuma/core/linear_algebra.h>
 
 #include <memory>
+#include <vector>
 
 namespace pneuma
 {
@@ -62,6 +63,12 @@ namespace pneuma
       /// and @p x: full vectors, the same on every rank).
       void
       solve(const dealii::Vector<double> &b, dealii::Vector<double> &x);
+
+      /// The same for several right-hand sides at once (one MUMPS solve
+      /// with NRHS = b.size(): one pass over the factors).
+      void
+      solve(const std::vector<dealii::Vector<double>> &b,
+            std::vector<dealii::Vector<double>>       &x);
 
     private:
       struct Data;
