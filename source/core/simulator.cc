@@ -336,6 +336,46 @@ namespace pneuma
                       r.computed ? r.zero : nan,
                       Statistics::history);
       }
+    // The lowest eigenvalues along the path (not at the reference state,
+    // whose tangent is singular for a stress-free membrane).
+    if (eigen.active() && eigen.every_step)
+      {
+        solvers::EigenResult r;
+        if (step.step > 0)
+          {
+            r = solvers::EigenAnalysis::run(model, state, eigen);
+            if (!r.computed)
+              pcout << "  eigen analysis: " << r.error << std::endl;
+            else
+              {
+                pcout << "  eigen analysis: lowest";
+                for (const double v : r.values)
+                  pcout << " " << v;
+                pcout << (eigen.type == "tangent" ? " N/m"
+                          : eigen.type == "modal" ? " 1/s^2"
+                                                  : " (load factors)")
+                      << std::endl;
+              }
+          }
+        for (unsigned int k = 0; k < eigen.n_modes; ++k)
+          {
+            const double          v = k < r.values.size()
+                                        ? r.values[k]
+                                        : std::numeric_limits<double>::quiet_NaN();
+            const StatisticsGroup g{"mode", "", "", k + 1};
+            if (eigen.type == "tangent")
+              row.add(g, "eigenvalue", "N/m", v, Statistics::history);
+            else if (eigen.type == "modal")
+              row.add(g,
+                      "frequency",
+                      "Hz",
+                      solvers::EigenAnalysis::frequency(v),
+                      Statistics::history);
+            else
+              row.add(
+                g, "critical_time", "", step.time + v, Statistics::history);
+          }
+      }
     row.reduce(comm);
     return row;
   }

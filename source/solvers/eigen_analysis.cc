@@ -62,6 +62,13 @@ namespace pneuma
                         "ARPACK's restarts before the analysis is reported "
                         "not converged.",
                         Patterns::Integer(1, 100000));
+      prm.add_parameter(
+        "Every step",
+        every_step,
+        "Also analyse every converged step after the reference state and "
+        "write the values to history.csv (mode<k>_eigenvalue, "
+        "mode<k>_frequency or mode<k>_critical_time): the lowest "
+        "eigenvalues along the path. Costs the analysis per step.");
       prm.add_parameter("Write modes",
                         write_modes,
                         "Add the mode shapes (largest component 1) as fields "

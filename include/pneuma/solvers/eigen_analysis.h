@@ -61,6 +61,8 @@ namespace pneuma
       double       tolerance      = 1e-10;
       unsigned int max_iterations = 300;
       bool         write_modes    = true;
+      /// Also at every converged step (history.csv columns).
+      bool every_step = false;
 
       void
       declare_parameters(dealii::ParameterHandler &prm);
