@@ -147,28 +147,50 @@ main(int argc, char **argv)
     const double E = 1e6, nu = 0.3, h = 1e-3, rho = 1000., eps = 0.01, a = 1.;
     const double N = E * h / (1. - nu) * ((1. + eps) * (1. + eps) - 1.) / 2.;
     const double c = 0.5 * std::sqrt(N / (rho * h)) / a;
-    const auto   s = pneuma_test::run({
-        {"Geometry/Type", "square"},
-        {"Geometry/square/Side length", "1"},
-        {"Geometry/Global refinements", "3"},
-        {"Discretisation/Polynomial degree", "2"},
-        {"Materials/Region 0/Thickness", number(h)},
-        {"Materials/Region 0/Density", number(rho)},
-        {"Materials/Region 0/Saint Venant-Kirchhoff/Young's modulus", number(E)},
-        {"Materials/Region 0/Saint Venant-Kirchhoff/Poisson's ratio", number(nu)},
-        {"Boundary conditions/Prescribed displacement boundaries", "0, 1, 2, 3"},
-        {"Boundary conditions/Prescribed displacement/Function expression",
-         number(eps) + "*x*t; " + number(eps) + "*y*t; 0"},
-        {"Eigen analysis/Type", "modal"},
-        {"Eigen analysis/Number of modes", "6"},
-    });
-    ok             = common_checks(s, "square membrane") && ok;
+    const pneuma_test::Settings square = {
+      {"Geometry/Type", "square"},
+      {"Geometry/square/Side length", "1"},
+      {"Geometry/Global refinements", "3"},
+      {"Discretisation/Polynomial degree", "2"},
+      {"Materials/Region 0/Thickness", number(h)},
+      {"Materials/Region 0/Density", number(rho)},
+      {"Materials/Region 0/Saint Venant-Kirchhoff/Young's modulus", number(E)},
+      {"Materials/Region 0/Saint Venant-Kirchhoff/Poisson's ratio", number(nu)},
+      {"Boundary conditions/Prescribed displacement boundaries", "0, 1, 2, 3"},
+      {"Boundary conditions/Prescribed displacement/Function expression",
+       number(eps) + "*x*t; " + number(eps) + "*y*t; 0"},
+      {"Eigen analysis/Type", "modal"},
+      {"Eigen analysis/Number of modes", "6"},
+    };
+    const auto s = pneuma_test::run(square);
+    ok           = common_checks(s, "square membrane") && ok;
     // The (1,1) mode carries 64/pi^4 of the membrane's mass rho h a^2.
     ok = pneuma_test::check("square membrane: effective mass of mode 1 [kg]",
                             s.get("mode1_effective_mass_z"),
                             64. / std::pow(M_PI, 4) * rho * h * a * a,
                             1e-2)
          && ok;
+    // The same by the non-symmetric solver (Arnoldi on the LU): the same
+    // frequencies.
+    {
+      pneuma_test::Settings n = square;
+      n.push_back({"Eigen analysis/Solver", "non-symmetric"});
+      const auto u     = pneuma_test::run(n);
+      double     worst = 0.;
+      for (unsigned int k = 1; k <= 6; ++k)
+        {
+          const std::string f = "mode" + std::to_string(k) + "_frequency";
+          worst = std::max(worst, std::abs(u.get(f) / s.get(f) - 1.));
+        }
+      const bool same =
+        u.exit_code == 0 && worst < 1e-8 && u.get("eigen_non_symmetric") == 1.;
+      if (root)
+        std::printf("square membrane, non-symmetric solver: largest relative "
+                    "difference of the six frequencies %s 1e-08 %s\n",
+                    worst < 1e-8 ? "below" : "above",
+                    same ? "PASS" : "FAIL");
+      ok = ok && same;
+    }
     const double mn[6] = {2., 5., 5., 8., 10., 10.};
     for (unsigned int k = 1; k <= 6; ++k)
       ok = pneuma_test::check("square membrane: f of mode " + std::to_string(k)

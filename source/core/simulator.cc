@@ -394,7 +394,11 @@ namespace pneuma
           << r.values.size() << " modes in " << r.iterations
           << " ARPACK restarts, largest relative residual " << std::scientific
           << std::setprecision(2) << r.residual;
-    if (eigen.type != "buckling")
+    if (r.non_symmetric)
+      pcout << "; non-symmetric tangent: Arnoldi on its LU, the "
+               "eigenvalues nearest the shift (largest |Im|/|lambda| "
+            << r.imaginary << ")";
+    else if (eigen.type != "buckling")
       pcout << ", " << r.below_shift << " eigenvalue(s) below the shift";
     pcout << std::endl;
     for (unsigned int k = 0; k < r.values.size(); ++k)
@@ -641,8 +645,15 @@ namespace pneuma
       {
         row.add_count(run,
                       "eigen_below_shift",
-                      eigen_result.below_shift,
+                      eigen_result.below_shift >= 0
+                        ? eigen_result.below_shift
+                        : std::numeric_limits<double>::quiet_NaN(),
                       counts);
+        row.add_count(run,
+                      "eigen_non_symmetric",
+                      eigen_result.non_symmetric,
+                      counts);
+        row.add(run, "eigen_asymmetry", "", eigen_result.asymmetry, counts);
         row.add_count(run, "eigen_iterations", eigen_result.iterations, counts);
         row.add(run, "eigen_residual", "", eigen_result.residual, counts);
         row.add_count(run,

@@ -69,6 +69,16 @@ namespace pneuma
         "write the values to history.csv (mode<k>_eigenvalue, "
         "mode<k>_frequency or mode<k>_critical_time): the lowest "
         "eigenvalues along the path. Costs the analysis per step.");
+      prm.add_parameter(
+        "Solver",
+        solver,
+        "automatic: Lanczos on MUMPS' LDL^T for a symmetric tangent, "
+        "Arnoldi on its LU where the tangent is not symmetric (friction); "
+        "symmetric or non-symmetric: that one (buckling is symmetric only). "
+        "The non-symmetric solve gives the eigenvalues nearest the shift "
+        "(real parts; complex pairs reported by their real part) without "
+        "Sylvester's count below it.",
+        Patterns::Selection("automatic|symmetric|non-symmetric"));
       prm.add_parameter("Write modes",
                         write_modes,
                         "Add the mode shapes (largest component 1) as fields "
@@ -79,6 +89,10 @@ namespace pneuma
     void
     EigenParameters::parse_parameters(ParameterHandler &)
     {
+      check_input(!(type == "buckling" && solver == "non-symmetric"),
+                  "Eigen analysis/Solver",
+                  "linear buckling needs the symmetric solver (its metric is "
+                  "the positive definite tangent)");
       check_input(!(type == "modal" && shift < 0.),
                   "Eigen analysis/Shift",
                   "a modal analysis' shift is a frequency [Hz] and must not "
@@ -196,8 +210,9 @@ namespace pneuma
                        const LA::SparseMatrix &A,
                        const BorderCoupling   &c,
                        const EnergyBorder     &e,
-                       const IndexSet         &owned)
-          : factorization(comm)
+                       const IndexSet         &owned,
+                       const bool              symmetric = true)
+          : factorization(comm, 1e-12, symmetric)
           , owned(owned)
         {
           const Inertia k      = factorization.compute(A);
@@ -214,8 +229,11 @@ namespace pneuma
           for (unsigned int i = 0; i < m; ++i)
             for (unsigned int j = 0; j < m; ++j)
               S(i, j) = e.AD(i, j) - B[i] * Z[j];
-          negative = static_cast<long long>(k.negative)
-                     + negative_eigenvalues(S) - static_cast<long long>(m);
+          // Sylvester's count (an LU's pivots count nothing).
+          negative  = symmetric
+                        ? static_cast<long long>(k.negative)
+                           + negative_eigenvalues(S) - static_cast<long long>(m)
+                        : -1;
           S_inverse = S;
           if (m > 0)
             S_inverse.gauss_jordan();
@@ -522,10 +540,16 @@ namespace pneuma
             throw std::runtime_error(
               "the chamber terms are not of energy form (liquid and gas in "
               "one chamber)");
-          if (asymmetry(K, owned) > 1e-8)
+          const double asym = asymmetry(K, owned);
+          const bool   non_symmetric =
+            p.solver == "non-symmetric"
+            || (p.solver == "automatic" && asym > 1e-8);
+          if (p.type == "buckling" && asym > 1e-8)
             throw std::runtime_error(
-              "the tangent is not symmetric (friction, or follower pressure "
-              "on free edges); the eigen analysis needs a symmetric one");
+              "linear buckling needs a symmetric tangent; this one is not "
+              "(friction, or follower pressure on free edges)");
+          result.non_symmetric = non_symmetric;
+          result.asymmetry     = asym;
 
           // The dimension of the problem: free dofs less constraints.
           types::global_dof_index n_free = 0;
@@ -569,15 +593,17 @@ namespace pneuma
             SolverControl control(p.max_iterations, p.tolerance, false, false);
             const Arpack::AdditionalData data(ncv,
                                               which,
-                                              true,
+                                              !non_symmetric,
                                               buckling ? 2 : 3);
             Arpack                       solver(control, comm, data);
             solver.reinit(partition.owned);
             solver.set_initial_vector(partition.to_arpack(start));
             if (!buckling)
               solver.set_shift(sigma);
-            std::vector<std::complex<double>> lambda(nev);
-            std::vector<LA::Vector>           modes(nev,
+            // Arnoldi returns nev + 1 vectors (a complex pair's real and
+            // imaginary parts side by side).
+            std::vector<std::complex<double>> lambda(nev + 1);
+            std::vector<LA::Vector>           modes(nev + 1,
                                           LA::Vector(partition.owned, comm));
             try
               {
@@ -604,6 +630,10 @@ namespace pneuma
               {
                 mu.push_back(lambda[k].real());
                 result.modes.push_back(partition.to_model(modes[k]));
+                if (std::abs(lambda[k]) > 0.)
+                  result.imaginary =
+                    std::max(result.imaginary,
+                             std::abs(lambda[k].imag()) / std::abs(lambda[k]));
               }
           };
           // The lowest eigenvalues by shift-and-invert at sigma, whose
@@ -652,7 +682,8 @@ namespace pneuma
                   shifted.compress(VectorOperation::add);
                 }
               Timer                factorizing;
-              const ShiftedInverse inverse(comm, shifted, c, e, owned);
+              const ShiftedInverse inverse(
+                comm, shifted, c, e, owned, !non_symmetric);
               result.factorization_seconds = factorizing.wall_time();
               if (inverse.zero_pivots > 0)
                 throw std::runtime_error(
@@ -661,7 +692,15 @@ namespace pneuma
                   "analysis/Shift");
               result.below_shift = inverse.negative;
               const FreeIdentity I(constraints);
-              if (p.type == "modal")
+              // Non-symmetric: the eigenvalues nearest the shift (no
+              // count to find those below it first).
+              if (non_symmetric && p.type == "modal")
+                solve(
+                  K_c, M, inverse, Arpack::largest_magnitude, p.n_modes, sigma);
+              else if (non_symmetric)
+                solve(
+                  K_c, I, inverse, Arpack::largest_magnitude, p.n_modes, sigma);
+              else if (p.type == "modal")
                 lowest(K_c, M, inverse, sigma, inverse.negative);
               else
                 lowest(K_c, I, inverse, sigma, inverse.negative);

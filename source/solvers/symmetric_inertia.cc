@@ -34,14 +34,16 @@ namespace pneuma
     };
 
     SymmetricInertia::SymmetricInertia(const MPI_Comm comm,
-                                       const double   zero_pivot_threshold)
+                                       const double   zero_pivot_threshold,
+                                       const bool     symmetric)
       : data(std::make_unique<Data>())
     {
       DMUMPS_STRUC_C &id = data->id;
       id                 = DMUMPS_STRUC_C();
       id.comm_fortran    = static_cast<MUMPS_INT>(MPI_Comm_c2f(comm));
       id.par             = 1; // the host works too
-      id.sym             = 2; // general symmetric: LDL^T with 2x2 pivots
+      // General symmetric: LDL^T with 2x2 pivots; or LU.
+      id.sym = symmetric ? 2 : 0;
       data->call(-1);
       data->initialized = true;
       id.icntl[0]       = -1; // no error, diagnostic or global output
@@ -84,7 +86,7 @@ namespace pneuma
           for (int k = 0; k < n; ++k)
             {
               const long long column = M.GCID64(local[k]);
-              if (column >= row)
+              if (column >= row || data->id.sym == 0)
                 {
                   rows.push_back(static_cast<MUMPS_INT>(row + 1));
                   columns.push_back(static_cast<MUMPS_INT>(column + 1));
@@ -113,8 +115,8 @@ namespace pneuma
         }
       d.call(2); // factorization
       Inertia result;
-      result.negative = id.infog[11]; // INFOG(12)
-      result.zero     = id.infog[27]; // INFOG(28)
+      result.negative = id.sym == 0 ? 0 : id.infog[11]; // INFOG(12)
+      result.zero     = id.infog[27];                   // INFOG(28)
       result.positive = A.m() - result.negative - result.zero;
       return result;
     }

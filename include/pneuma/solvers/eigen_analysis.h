@@ -63,6 +63,8 @@ namespace pneuma
       bool         write_modes    = true;
       /// Also at every converged step (history.csv columns).
       bool every_step = false;
+      /// automatic | symmetric | non-symmetric
+      std::string solver = "automatic";
 
       void
       declare_parameters(dealii::ParameterHandler &prm);
@@ -91,6 +93,13 @@ namespace pneuma
       /// and the model's mass r^T M r.
       std::vector<std::array<double, 3>> effective_mass;
       double                             total_mass = 0.;
+      /// Solved as a non-symmetric problem (Arnoldi on an LU
+      /// factorization; no count below the shift), and the largest
+      /// |Im lambda| / |lambda| of its values (0 for real ones).
+      bool   non_symmetric = false;
+      double imaginary     = 0.;
+      /// |y.Kx - x.Ky| / (|Kx| |y|) of the tangent (solvers/stability.h).
+      double asymmetry = 0.;
       /// Eigenvalues of the pencil below the shift (Sylvester; -1: not
       /// known), and the pseudo time of the state.
       long long below_shift = -1;

@@ -51,10 +51,16 @@ namespace pneuma
        * counts as a zero eigenvalue (CNTL(3)).
        */
       explicit SymmetricInertia(const MPI_Comm comm,
-                                const double   zero_pivot_threshold = 1e-12);
+                                const double   zero_pivot_threshold = 1e-12,
+                                const bool     symmetric            = true);
       ~SymmetricInertia();
 
-      /// The inertia of @p A (symmetric; only its upper triangle is read).
+      /**
+       * The inertia of @p A (symmetric; only its upper triangle is read).
+       * Constructed with @p symmetric = false, the factorization is MUMPS'
+       * LU (SYM = 0) of the whole matrix, for its solves; its "inertia"
+       * then only counts zero pivots.
+       */
       /// Throws std::runtime_error with MUMPS' error code if it fails.
       Inertia
       compute(const LA::SparseMatrix &A);
