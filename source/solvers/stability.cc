@@ -1,8 +1,10 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 
 #include <pneuma/core/model.h>
+#include <pneuma/solvers/eigen_analysis.h>
 #include <pneuma/solvers/stability.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace pneuma
@@ -14,6 +16,9 @@ namespace pneuma
       /// Relative size below which a border eigenvalue or a deviation from
       /// proportionality is round-off.
       constexpr double round_off = 1e-8;
+      /// Eigenvalues nearest zero whose real parts are counted for a
+      /// non-symmetric tangent.
+      constexpr unsigned int nearest_for_count = 6;
     } // namespace
 
     long long
@@ -142,10 +147,38 @@ namespace pneuma
                         "gas in one chamber): only the count under "
                         "prescribed pressures is known";
         }
+      // A non-symmetric tangent (friction in slip, follower pressure on
+      // free edges): Sylvester's law does not apply; count the negative
+      // real parts among the eigenvalues nearest zero (Arnoldi on the LU,
+      // solvers/eigen_analysis.h).
       if (report.asymmetry > round_off && report.note.empty())
-        report.note = "the tangent is not symmetric (friction, or follower "
-                      "pressure on free edges): the count is that of its "
-                      "upper triangle";
+        {
+          EigenParameters p;
+          p.type              = "tangent";
+          p.n_modes           = nearest_for_count;
+          p.solver            = "non-symmetric";
+          p.write_modes       = false;
+          const EigenResult e = EigenAnalysis::run(model, state, p);
+          if (e.computed)
+            {
+              report.negative =
+                std::count_if(e.values.begin(),
+                              e.values.end(),
+                              [](const double v) { return v < 0.; });
+              report.note =
+                "the tangent is not symmetric (friction, or follower "
+                "pressure on free edges): the count is that of the negative "
+                "real parts among its "
+                + std::to_string(nearest_for_count)
+                + " eigenvalues nearest zero (Arnoldi)";
+            }
+          else
+            report.note = "the tangent is not symmetric (friction, or "
+                          "follower pressure on free edges) and its eigen "
+                          "solve failed ("
+                          + e.error
+                          + "): the count is that of its upper triangle";
+        }
       return report;
     }
   } // namespace solvers

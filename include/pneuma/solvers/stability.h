@@ -24,10 +24,13 @@
  * with m the coupled chamber unknowns (a prescribed pressure is not
  * coupled and drops out). S is m x m and costs m substitutions.
  *
- * MUMPS reads the upper triangle of K: with friction, or a follower
- * pressure on an open surface with free edges, K is not symmetric, the
- * count is that of the symmetric matrix of its upper triangle, and the
- * report says so (asymmetry, relative).
+ * MUMPS reads the upper triangle of K. With friction in slip, or a follower
+ * pressure on an open surface with free edges, K is not symmetric and
+ * Sylvester's law does not apply: the count is then that of the negative
+ * real parts among the 6 eigenvalues nearest zero of the non-symmetric
+ * tangent (Arnoldi on its LU, solvers/eigen_analysis.h; an eigenvalue far
+ * from zero with a negative real part would be missed), and the report
+ * says so (asymmetry, relative).
  */
 
 #include <pneuma/solvers/bordered_vector.h>
