@@ -45,14 +45,6 @@
 
 namespace
 {
-  std::string
-  number(const double x)
-  {
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, "%.15g", x);
-    return buffer;
-  }
-
   /// Exit code, ARPACK's residual, and (shift-and-invert) no eigenvalue
   /// below the shift.
   bool
@@ -92,10 +84,11 @@ namespace
                 {"Cables/Cable 1/Element", "cable"},
                 {"Cables/Cable 1/polyline/Points", "0, 0, 0; 1, 0, 0"},
                 {"Cables/Cable 1/Number of elements", std::to_string(n)},
-                {"Cables/Cable 1/Section semi-axes", number(a) + ", " + number(a)},
+                {"Cables/Cable 1/Section semi-axes",
+                 pneuma_test::number(a) + ", " + pneuma_test::number(a)},
                 {"Cables/Cable 1/Young's modulus", "2e11"},
-                {"Cables/Cable 1/Density", number(rho)},
-                {"Cables/Cable 1/Prestress force", number(T)},
+                {"Cables/Cable 1/Density", pneuma_test::number(rho)},
+                {"Cables/Cable 1/Prestress force", pneuma_test::number(T)},
                 {"Cables/Cable 1/Start support", "fixed"},
                 {"Cables/Cable 1/End support", "fixed"},
                 {"Eigen analysis/Type", "modal"},
@@ -153,13 +146,16 @@ main(int argc, char **argv)
       {"Geometry/square/Side length", "1"},
       {"Geometry/Global refinements", "3"},
       {"Discretisation/Polynomial degree", "2"},
-      {"Materials/Region 0/Thickness", number(h)},
-      {"Materials/Region 0/Density", number(rho)},
-      {"Materials/Region 0/Saint Venant-Kirchhoff/Young's modulus", number(E)},
-      {"Materials/Region 0/Saint Venant-Kirchhoff/Poisson's ratio", number(nu)},
+      {"Materials/Region 0/Thickness", pneuma_test::number(h)},
+      {"Materials/Region 0/Density", pneuma_test::number(rho)},
+      {"Materials/Region 0/Saint Venant-Kirchhoff/Young's modulus",
+       pneuma_test::number(E)},
+      {"Materials/Region 0/Saint Venant-Kirchhoff/Poisson's ratio",
+       pneuma_test::number(nu)},
       {"Boundary conditions/Prescribed displacement boundaries", "0, 1, 2, 3"},
       {"Boundary conditions/Prescribed displacement/Function expression",
-       number(eps) + "*x*t; " + number(eps) + "*y*t; 0"},
+       pneuma_test::number(eps) + "*x*t; " + pneuma_test::number(eps)
+         + "*y*t; 0"},
       {"Eigen analysis/Type", "modal"},
       {"Eigen analysis/Number of modes", "6"},
     };
@@ -218,14 +214,16 @@ main(int argc, char **argv)
     pneuma_test::Settings c = {
       {"Geometry/Type", "closed cylinder"},
       {"Geometry/Global refinements", "2"},
-      {"Geometry/closed cylinder/Radius", number(R)},
-      {"Geometry/closed cylinder/Length", number(L)},
+      {"Geometry/closed cylinder/Radius", pneuma_test::number(R)},
+      {"Geometry/closed cylinder/Length", pneuma_test::number(L)},
       {"Discretisation/Polynomial degree", "2"},
-      {"Materials/Region 0/Thickness", number(h)},
-      {"Materials/Region 0/Density", number(rho)},
-      {"Materials/Region 0/Saint Venant-Kirchhoff/Young's modulus", number(E)},
-      {"Materials/Region 0/Saint Venant-Kirchhoff/Poisson's ratio", number(nu)},
-      {"Loads/Pressure/Function expression", number(p) + "*t"},
+      {"Materials/Region 0/Thickness", pneuma_test::number(h)},
+      {"Materials/Region 0/Density", pneuma_test::number(rho)},
+      {"Materials/Region 0/Saint Venant-Kirchhoff/Young's modulus",
+       pneuma_test::number(E)},
+      {"Materials/Region 0/Saint Venant-Kirchhoff/Poisson's ratio",
+       pneuma_test::number(nu)},
+      {"Loads/Pressure/Function expression", pneuma_test::number(p) + "*t"},
       {"Boundary conditions/Rigid regions", "1, 2"},
       {"Boundary conditions/Fixed points",
        "0,0,0: xyz; 2,0,0: yz; 0.05,0,0.1: y"},
@@ -347,14 +345,15 @@ main(int argc, char **argv)
            {"Cables/Cable 1/Element", "solid beam"},
            {"Cables/Cable 1/polyline/Points", "0, 0, 0; 1, 0, 0"},
            {"Cables/Cable 1/Number of elements", "16"},
-           {"Cables/Cable 1/Section semi-axes", number(a) + ", " + number(a)},
+           {"Cables/Cable 1/Section semi-axes",
+            pneuma_test::number(a) + ", " + pneuma_test::number(a)},
            {"Cables/Cable 1/solid beam/Section axis", "0, 0, 1"},
-           {"Cables/Cable 1/Young's modulus", number(E)},
+           {"Cables/Cable 1/Young's modulus", pneuma_test::number(E)},
            {"Cables/Cable 1/solid beam/Poisson's ratio", "0"},
            {"Cables/Cable 1/Start support", "fixed"},
            {"Cables/Cable 1/End forces", "true"},
            {"Cables/Cable 1/End force/Function expression",
-            number(-P) + " * t; 0; 0"},
+            pneuma_test::number(-P) + " * t; 0; 0"},
            {"Eigen analysis/Type", "buckling"},
            {"Eigen analysis/Number of modes", "2"},
     });

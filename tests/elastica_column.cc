@@ -82,14 +82,6 @@ namespace
       }
     return {};
   }
-
-  std::string
-  number(const double x)
-  {
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, "%.15g", x);
-    return buffer;
-  }
 } // namespace
 
 int
@@ -104,14 +96,16 @@ main(int argc, char **argv)
      {"Cables/Cable 1/Element", "solid beam"},
      {"Cables/Cable 1/polyline/Points", "0, 0, 0; 1, 0, 0"},
      {"Cables/Cable 1/Number of elements", "64"},
-     {"Cables/Cable 1/Section semi-axes", number(a) + ", " + number(a)},
+     {"Cables/Cable 1/Section semi-axes",
+      pneuma_test::number(a) + ", " + pneuma_test::number(a)},
      {"Cables/Cable 1/solid beam/Section axis", "0, 0, 1"},
-     {"Cables/Cable 1/Young's modulus", number(E)},
+     {"Cables/Cable 1/Young's modulus", pneuma_test::number(E)},
      {"Cables/Cable 1/solid beam/Poisson's ratio", "0"},
      {"Cables/Cable 1/Start support", "fixed"},
      {"Cables/Cable 1/End forces", "true"},
      {"Cables/Cable 1/End force/Function expression",
-      number(-P_end) + " * t; " + number(P_end / 100.) + " * t; 0"},
+      pneuma_test::number(-P_end) + " * t; " + pneuma_test::number(P_end / 100.)
+        + " * t; 0"},
      {"Load stepping/Control", "arc-length"},
      {"Load stepping/Initial increment", "0.02"},
      {"Load stepping/Maximum increment", "0.05"},

@@ -26,6 +26,15 @@ namespace pneuma_test
 {
   using Settings = std::vector<std::pair<std::string, std::string>>;
 
+  /// @p x with all its digits, for a setting's value.
+  inline std::string
+  number(const double x)
+  {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.15g", x);
+    return buffer;
+  }
+
   /// Quiet runs without VTU into "run-output".
   inline Settings
   quiet()

@@ -517,7 +517,8 @@ namespace pneuma
     EigenResult
     EigenAnalysis::run(Model                 &model,
                        const BorderedVector  &state,
-                       const EigenParameters &p)
+                       const EigenParameters &p,
+                       const bool             assembled)
     {
       TimerOutput::Scope t(model.timer(), "eigen analysis");
       Timer              wall;
@@ -530,9 +531,12 @@ namespace pneuma
       try
         {
           // The tangent of the state and its chamber border.
-          BorderedVector residual;
-          residual.field.reinit(state.field);
-          model.assemble(state, residual);
+          if (!assembled)
+            {
+              BorderedVector residual;
+              residual.field.reinit(state.field);
+              model.assemble(state, residual);
+            }
           const LA::SparseMatrix &K = model.tangent_matrix();
           const BorderCoupling   &c = model.border_coupling();
           const EnergyBorder      e = energy_border(c);
@@ -658,9 +662,12 @@ namespace pneuma
                     sigma);
           };
 
+          // The mass of a modal analysis (for the solve and the effective
+          // masses).
+          LA::SparseMatrix M;
           if (p.type == "tangent" || p.type == "modal")
             {
-              LA::SparseMatrix M, shifted;
+              LA::SparseMatrix shifted;
               const double     sigma =
                 p.type == "modal" ? std::pow(2. * M_PI * p.shift, 2) : p.shift;
               shifted.copy_from(K);
@@ -788,8 +795,6 @@ namespace pneuma
           // under a base motion along x, y, z).
           if (p.type == "modal")
             {
-              LA::SparseMatrix M;
-              model.assemble_mass(M);
               std::array<LA::Vector, 3> Mr;
               for (unsigned int d = 0; d < 3; ++d)
                 {

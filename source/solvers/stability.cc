@@ -158,7 +158,7 @@ namespace pneuma
           p.n_modes           = nearest_for_count;
           p.solver            = "non-symmetric";
           p.write_modes       = false;
-          const EigenResult e = EigenAnalysis::run(model, state, p);
+          const EigenResult e = EigenAnalysis::run(model, state, p, true);
           if (e.computed)
             {
               report.negative =

@@ -127,10 +127,15 @@ namespace pneuma
        * The analysis @p p of @p state at the model's current time
        * (converged there). Failures (a singular shifted tangent, no
        * convergence, an unstable state for buckling) are returned in
-       * EigenResult::error, never thrown.
+       * EigenResult::error, never thrown. With @p assembled the model's
+       * tangent and border are already those of @p state (the stability
+       * check's), and are not assembled again.
        */
       static EigenResult
-      run(Model &model, const BorderedVector &state, const EigenParameters &p);
+      run(Model                 &model,
+          const BorderedVector  &state,
+          const EigenParameters &p,
+          const bool             assembled = false);
 
       /// The frequency [Hz] of omega^2 = @p omega_squared: omega/(2 pi),
       /// negative (-sqrt(-omega^2)/(2 pi)) for an unstable mode.
