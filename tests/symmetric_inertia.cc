@@ -7,11 +7,19 @@
 //   rank): n positive and m negative eigenvalues, and zero diagonal
 //   entries that need 2x2 pivots;
 // - a singular matrix (a Laplacian with free ends has one zero
-//   eigenvalue): the zero pivot is counted, not called negative.
+//   eigenvalue): the zero pivot is counted, not called negative;
+// - the Newton solves (solvers/linear_solver.h): the LDL^T solve of the
+//   indefinite shifted Laplacian and of the saddle point, distributed
+//   vectors gathered to MUMPS and back, against the LU of Amesos_Mumps
+//   (residuals and the difference of the two solutions); "automatic"
+//   picks LDLT for these and LU for a non-symmetric matrix.
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
+#include <deal.II/base/parameter_handler.h>
+
+#include <pneuma/solvers/linear_solver.h>
 #include <pneuma/solvers/symmetric_inertia.h>
 
 #include "test_tools.h"
@@ -144,5 +152,87 @@ main(int argc, char **argv)
   const auto                        z = singular.compute(L);
   ok &= check_count("free Laplacian: zero eigenvalues", z.zero, 1);
   ok &= check_count("  negative", z.negative, 0);
+
+  // Newton's solves: LDL^T against LU.
+  const auto solve = [&](const std::string              &factorization,
+                         const pneuma::LA::SparseMatrix &A,
+                         pneuma::LA::Vector             &x,
+                         const pneuma::LA::Vector       &b) {
+    pneuma::solvers::LinearSolver solver;
+    dealii::ParameterHandler      prm;
+    solver.declare_parameters(prm);
+    prm.parse_input_from_string(
+      "subsection Linear solver\n subsection direct\n  set Factorization = "
+      + factorization + "\n end\nend\n");
+    solver.factorize(A);
+    solver.solve(A, x, b);
+    return solver.factorization();
+  };
+  const bool root =
+    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  const auto shifted = make_matrix(n, [&](const global_dof_index i) {
+    std::vector<std::pair<global_dof_index, double>> e;
+    if (i > 0)
+      e.emplace_back(i - 1, -1.);
+    e.emplace_back(i, 2. - 1.7);
+    if (i + 1 < n)
+      e.emplace_back(i + 1, -1.);
+    return e;
+  });
+  for (const auto &[name, A] :
+       std::vector<std::pair<std::string, const pneuma::LA::SparseMatrix *>>{
+         {"Laplacian - 1.7 I", &shifted}, {"saddle point", &S}})
+    {
+      pneuma::LA::Vector b(A->locally_owned_range_indices(), MPI_COMM_WORLD);
+      for (const auto i : b.locally_owned_elements())
+        b[i] = std::sin(0.37 * i + 0.2);
+      b.compress(dealii::VectorOperation::insert);
+      pneuma::LA::Vector x_ldlt(b), x_lu(b), r(b);
+      const std::string  kind = solve("automatic", *A, x_ldlt, b);
+      solve("LU", *A, x_lu, b);
+      A->vmult(r, x_ldlt);
+      r -= b;
+      const double residual = r.l2_norm() / b.l2_norm();
+      x_lu -= x_ldlt;
+      const double difference = x_lu.l2_norm() / x_ldlt.l2_norm();
+      const bool   pass =
+        kind == "LDLT" && residual < 1e-12 && difference < 1e-10;
+      ok &= pass;
+      if (root)
+        std::printf("%s, Newton solve: automatic chose %s; |Ax - b|/|b| %s "
+                    "1e-12, |x_LU - x_LDLT|/|x| %s 1e-10 %s\n",
+                    name.c_str(),
+                    kind.c_str(),
+                    residual < 1e-12 ? "<" : ">=",
+                    difference < 1e-10 ? "<" : ">=",
+                    pass ? "PASS" : "FAIL");
+    }
+  // Not symmetric: an upwinded Laplacian.
+  const auto N = make_matrix(n, [&](const global_dof_index i) {
+    std::vector<std::pair<global_dof_index, double>> e;
+    if (i > 0)
+      e.emplace_back(i - 1, -1.5);
+    e.emplace_back(i, 2.5);
+    if (i + 1 < n)
+      e.emplace_back(i + 1, -0.5);
+    return e;
+  });
+  {
+    pneuma::LA::Vector b(N.locally_owned_range_indices(), MPI_COMM_WORLD);
+    b = 1.;
+    pneuma::LA::Vector x(b), r(b);
+    const std::string  kind = solve("automatic", N, x, b);
+    N.vmult(r, x);
+    r -= b;
+    const bool small = r.l2_norm() < 1e-12 * b.l2_norm(); // on every rank
+    const bool pass  = kind == "LU" && small;
+    ok &= pass;
+    if (root)
+      std::printf("non-symmetric, Newton solve: automatic chose %s, residual "
+                  "%s 1e-12 %s\n",
+                  kind.c_str(),
+                  small ? "<" : ">=",
+                  pass ? "PASS" : "FAIL");
+  }
   return ok ? 0 : 1;
 }

@@ -618,6 +618,24 @@ namespace pneuma
                   "krylov_iterations",
                   model.linear_solver().n_krylov_iterations(),
                   counts);
+    if (model.linear_solver().type() == "direct")
+      {
+        // The last factorization: LDL^T (1) or LU (0), its size and work.
+        const auto &solver = model.linear_solver();
+        row.add_count(run,
+                      "factorization_symmetric",
+                      solver.factorization() == "LDLT" ? 1. : 0.,
+                      Statistics::summary);
+        row.add_count(run,
+                      "factor_entries",
+                      solver.factor_entries(),
+                      Statistics::summary);
+        row.add(run,
+                "factorization_gflop",
+                "",
+                1e-9 * solver.factorization_flops(),
+                Statistics::summary);
+      }
     row.add(
       run, "final_time", "", path_result.final_time, counts | Statistics::test);
     model.add_statistics(row, path_result.state);

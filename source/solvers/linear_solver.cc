@@ -3,6 +3,7 @@
 #include <deal.II/lac/trilinos_solver.h>
 
 #include <pneuma/solvers/linear_solver.h>
+#include <pneuma/solvers/stability.h>
 
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>
@@ -43,6 +44,16 @@ namespace pneuma
         "phase with metis costs several numeric factorizations "
         "(benchmarks/inflated_cylinder/results.md).",
         Patterns::Selection("metis|amd|amf|qamd|scotch|pord|auto"));
+      prm.add_parameter(
+        "Factorization",
+        direct_settings.factorization,
+        "MUMPS' factorization. LDLT: the symmetric indefinite LDL^T (half "
+        "the work and memory of LU; only the upper triangle is read, so the "
+        "tangent must be symmetric); LU: the general one (friction in "
+        "slip, follower pressure on free edges); automatic: LDLT for every "
+        "tangent whose measured asymmetry is below 1e-10, else LU. With "
+        "Package = Amesos_Klu always LU.",
+        Patterns::Selection("automatic|LDLT|LU"));
       prm.add_parameter("Reuse factorization",
                         direct_settings.reuse_factorization,
                         "Solve later Newton systems by GMRES preconditioned "
@@ -89,8 +100,73 @@ namespace pneuma
       direct.reset();
       problem.reset();
       amg.reset();
+      symmetric.reset();
+      use_symmetric   = false;
       factored_matrix = nullptr;
       stale           = false;
+    }
+
+    bool
+    LinearSolver::choose_symmetric(const LA::SparseMatrix &A) const
+    {
+      if (direct_settings.package != "Amesos_Mumps"
+          || direct_settings.factorization == "LU")
+        return false;
+      if (direct_settings.factorization == "LDLT")
+        return true;
+      // Two products with A: negligible against a factorization.
+      return asymmetry(A, A.locally_owned_range_indices()) < 1e-10;
+    }
+
+    void
+    LinearSolver::symmetric_factorization(const LA::SparseMatrix &A)
+    {
+      if (!symmetric)
+        symmetric =
+          std::make_unique<SymmetricInertia>(A.get_mpi_communicator(), 0.);
+      try
+        {
+          symmetric->compute(A);
+        }
+      catch (const std::runtime_error &)
+        {
+          symmetric.reset();
+          use_symmetric = false;
+          AssertThrow(false,
+                      ExcMessage("numeric factorization failed (singular "
+                                 "tangent)"));
+        }
+      ++factorizations;
+      stale              = false;
+      use_symmetric      = true;
+      last_factorization = "LDLT";
+    }
+
+    double
+    LinearSolver::factor_entries() const
+    {
+      if (solver_type != "direct")
+        return 0.;
+      if (use_symmetric && symmetric)
+        return symmetric->factor_entries();
+      if (auto *mumps = dynamic_cast<Amesos_Mumps *>(direct.get()))
+        {
+          const int entries = mumps->GetINFOG()[28];
+          return entries < 0 ? -1e6 * entries : static_cast<double>(entries);
+        }
+      return 0.;
+    }
+
+    double
+    LinearSolver::factorization_flops() const
+    {
+      if (solver_type != "direct")
+        return 0.;
+      if (use_symmetric && symmetric)
+        return symmetric->factorization_flops();
+      if (auto *mumps = dynamic_cast<Amesos_Mumps *>(direct.get()))
+        return mumps->GetRINFOG()[2];
+      return 0.;
     }
 
     void
@@ -112,6 +188,20 @@ namespace pneuma
     {
       if (solver_type == "direct")
         {
+          if (direct_settings.reuse_factorization && factorizations > 0
+              && factored_matrix == &A.trilinos_matrix()
+              && (use_symmetric ? symmetric != nullptr : direct != nullptr))
+            {
+              stale = true;
+              return;
+            }
+          if (choose_symmetric(A))
+            {
+              factored_matrix = &A.trilinos_matrix();
+              symmetric_factorization(A);
+              return;
+            }
+          use_symmetric = false;
           if (factored_matrix != &A.trilinos_matrix() || !direct)
             {
               problem = std::make_unique<Epetra_LinearProblem>();
@@ -204,12 +294,18 @@ namespace pneuma
                                  "tangent)"));
         }
       ++factorizations;
-      stale = false;
+      stale              = false;
+      last_factorization = "LU";
     }
 
     void
     LinearSolver::direct_solve(LA::Vector &x, const LA::Vector &b)
     {
+      if (use_symmetric)
+        {
+          symmetric->solve(b, x);
+          return;
+        }
       problem->SetLHS(&x.trilinos_vector());
       problem->SetRHS(const_cast<Epetra_MultiVector *>(
         static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));

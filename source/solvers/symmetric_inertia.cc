@@ -3,6 +3,8 @@
 #include <Epetra_CrsMatrix.h>
 #include <dmumps_c.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -50,9 +52,13 @@ namespace pneuma
       id.icntl[1]       = -1;
       id.icntl[2]       = -1;
       id.icntl[3]       = 0;
-      id.icntl[12]      = 1; // ICNTL(13): no ScaLAPACK root (exact count)
-      id.icntl[17]      = 3; // ICNTL(18): distributed triplets
-      id.icntl[23]      = 1; // ICNTL(24): detect null pivots
+      // ICNTL(13) = 1: no ScaLAPACK root, whose pivots INFOG(12) would not
+      // count; the Newton solves (no threshold) need no count.
+      id.icntl[12] = zero_pivot_threshold > 0. ? 1 : 0;
+      id.icntl[17] = 3; // ICNTL(18): distributed triplets
+      // ICNTL(24): detect null pivots (or, without a threshold, fail on
+      // them).
+      id.icntl[23] = zero_pivot_threshold > 0. ? 1 : 0;
       // ICNTL(7) = 2: the approximate minimum fill ordering, as for the
       // Newton solves (METIS's analysis costs several factorizations on
       // membrane meshes, benchmarks/inflated_cylinder/results.md).
@@ -176,6 +182,103 @@ namespace pneuma
       d.call(3);
       x =
         dealii::Utilities::MPI::broadcast(MPI_Comm_f2c(id.comm_fortran), x, 0);
+    }
+
+    void
+    SymmetricInertia::solve(const LA::Vector &b, LA::Vector &x)
+    {
+      Data              &d    = *data;
+      DMUMPS_STRUC_C    &id   = d.id;
+      const MPI_Comm     comm = MPI_Comm_f2c(id.comm_fortran);
+      const unsigned int n_ranks =
+        dealii::Utilities::MPI::n_mpi_processes(comm);
+      const bool host = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+      // The owned entries of b with their global indices, to the host.
+      const dealii::IndexSet    &owned = b.locally_owned_elements();
+      std::vector<std::uint64_t> indices;
+      std::vector<double>        values;
+      indices.reserve(owned.n_elements());
+      values.reserve(owned.n_elements());
+      for (const auto i : owned)
+        {
+          indices.push_back(i);
+          values.push_back(b[i]);
+        }
+      const int        n_local = static_cast<int>(indices.size());
+      std::vector<int> counts(host ? n_ranks : 0), offsets;
+      MPI_Gather(&n_local, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
+      std::vector<std::uint64_t> all_indices;
+      std::vector<double>        all_values, rhs;
+      if (host)
+        {
+          offsets.assign(n_ranks, 0);
+          for (unsigned int r = 1; r < n_ranks; ++r)
+            offsets[r] = offsets[r - 1] + counts[r - 1];
+          const std::size_t total = offsets.back() + counts.back();
+          all_indices.resize(total);
+          all_values.resize(total);
+          rhs.assign(b.size(), 0.);
+        }
+      MPI_Gatherv(indices.data(),
+                  n_local,
+                  MPI_UINT64_T,
+                  all_indices.data(),
+                  counts.data(),
+                  offsets.data(),
+                  MPI_UINT64_T,
+                  0,
+                  comm);
+      MPI_Gatherv(values.data(),
+                  n_local,
+                  MPI_DOUBLE,
+                  all_values.data(),
+                  counts.data(),
+                  offsets.data(),
+                  MPI_DOUBLE,
+                  0,
+                  comm);
+      if (host)
+        for (std::size_t k = 0; k < all_indices.size(); ++k)
+          rhs[all_indices[k]] = all_values[k];
+      // Centralized right-hand side and solution on the host.
+      id.icntl[19] = 0;
+      id.icntl[20] = 0;
+      id.nrhs      = 1;
+      id.lrhs      = static_cast<MUMPS_INT>(b.size());
+      id.rhs       = host ? rhs.data() : nullptr;
+      d.call(3);
+      // Back in the gathered order, then to the owners.
+      if (host)
+        for (std::size_t k = 0; k < all_indices.size(); ++k)
+          all_values[k] = rhs[all_indices[k]];
+      MPI_Scatterv(all_values.data(),
+                   counts.data(),
+                   offsets.data(),
+                   MPI_DOUBLE,
+                   values.data(),
+                   n_local,
+                   MPI_DOUBLE,
+                   0,
+                   comm);
+      if (x.size() != b.size())
+        x.reinit(b);
+      for (std::size_t k = 0; k < indices.size(); ++k)
+        x[indices[k]] = values[k];
+      x.compress(dealii::VectorOperation::insert);
+    }
+
+    double
+    SymmetricInertia::factor_entries() const
+    {
+      // INFOG(29), or -INFOG(29) millions when negative.
+      const auto entries = data->id.infog[28];
+      return entries < 0 ? -1e6 * entries : static_cast<double>(entries);
+    }
+
+    double
+    SymmetricInertia::factorization_flops() const
+    {
+      return data->id.rinfog[2]; // RINFOG(3)
     }
   } // namespace solvers
 } // namespace pneuma

@@ -9,6 +9,12 @@
  * subsection of its name, "Linear solver/direct/..." and
  * "Linear solver/amg/...".
  *
+ * The direct solver factorizes a symmetric tangent (no friction in slip,
+ * no follower pressure on free edges) by MUMPS' LDL^T (SYM = 2, called
+ * directly: solvers/symmetric_inertia.h), half the work and memory of the
+ * LU that Amesos_Mumps always does; "direct/Factorization = automatic"
+ * measures the asymmetry of each tangent and picks the factorization.
+ *
  * The direct solver can reuse a factorization across Newton iterations
  * (off by default): near convergence the tangent barely changes, and a few
  * GMRES iterations preconditioned by the factors of an earlier tangent
@@ -21,6 +27,7 @@
 #include <deal.II/lac/trilinos_precondition.h>
 
 #include <pneuma/core/linear_algebra.h>
+#include <pneuma/solvers/symmetric_inertia.h>
 
 #include <memory>
 #include <string>
@@ -100,6 +107,21 @@ namespace pneuma
         return solver_type;
       }
 
+      /// The factorization of the last factorize(): "LDLT", "LU" or ""
+      /// (AMG).
+      const std::string &
+      factorization() const
+      {
+        return last_factorization;
+      }
+
+      /// Entries of the factors and floating-point operations of the last
+      /// MUMPS factorization (INFOG(29), RINFOG(3); 0 for KLU and AMG).
+      double
+      factor_entries() const;
+      double
+      factorization_flops() const;
+
       /// Numeric factorizations done so far (direct solver).
       unsigned int
       n_factorizations() const
@@ -132,6 +154,8 @@ namespace pneuma
       {
         /// "Package": the Amesos solver.
         std::string package = "Amesos_Mumps";
+        /// "Factorization": automatic, LDLT or LU.
+        std::string factorization = "automatic";
         /// "Ordering": MUMPS's fill-reducing ordering, ICNTL(7).
         std::string ordering = "amf";
         /// "Reuse factorization", "Reuse iterations", "Reuse tolerance":
@@ -162,6 +186,12 @@ namespace pneuma
       std::unique_ptr<Epetra_LinearProblem> problem;
       std::unique_ptr<Amesos_BaseSolver>    direct;
       const void                           *factored_matrix = nullptr;
+      /// MUMPS' LDL^T of a symmetric tangent (its analysis is kept while
+      /// the sparsity does not change).
+      std::unique_ptr<SymmetricInertia> symmetric;
+      /// The active factorization is the LDL^T.
+      bool        use_symmetric = false;
+      std::string last_factorization;
       /// The forcing term of set_forcing().
       double forcing = 0.;
       /// True while the factors are those of an earlier tangent (reuse).
@@ -172,6 +202,12 @@ namespace pneuma
       /// Numeric factorization of the matrix bound to the Amesos problem.
       void
       numeric_factorization();
+      /// Numeric LDL^T factorization of @p A.
+      void
+      symmetric_factorization(const LA::SparseMatrix &A);
+      /// Whether the next factorization of @p A is the LDL^T.
+      bool
+      choose_symmetric(const LA::SparseMatrix &A) const;
       /// x = (factored matrix)^-1 b.
       void
       direct_solve(LA::Vector &x, const LA::Vector &b);

@@ -48,7 +48,9 @@ namespace pneuma
     public:
       /**
        * @p zero_pivot_threshold: a pivot below this times the matrix norm
-       * counts as a zero eigenvalue (CNTL(3)).
+       * counts as a zero eigenvalue (CNTL(3)); 0 turns the null pivot
+       * detection off, so that a singular matrix fails to factorize (the
+       * Newton solves, which regularize a singular tangent themselves).
        */
       explicit SymmetricInertia(const MPI_Comm comm,
                                 const double   zero_pivot_threshold = 1e-12,
@@ -75,6 +77,18 @@ namespace pneuma
       void
       solve(const std::vector<dealii::Vector<double>> &b,
             std::vector<dealii::Vector<double>>       &x);
+
+      /// x = A^{-1} b for distributed vectors (gathered to MUMPS' host
+      /// and scattered back; @p x has the layout of @p b).
+      void
+      solve(const LA::Vector &b, LA::Vector &x);
+
+      /// Entries of the factors (INFOG(29)) and floating-point operations
+      /// of the last factorization (RINFOG(3)).
+      double
+      factor_entries() const;
+      double
+      factorization_flops() const;
 
     private:
       struct Data;
