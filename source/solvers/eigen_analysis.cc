@@ -542,8 +542,9 @@ namespace pneuma
           const EnergyBorder      e = energy_border(c);
           if (!e.energy_form)
             throw std::runtime_error(
-              "the chamber terms are not of energy form (liquid and gas in "
-              "one chamber)");
+              "the chamber terms are not of energy form (their columns are "
+              "not in the span of their rows, or the combined border is not "
+              "symmetric and negative semi-definite)");
           const double asym = asymmetry(K, owned);
           const bool   non_symmetric =
             p.solver == "non-symmetric"

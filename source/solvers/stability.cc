@@ -65,28 +65,80 @@ namespace pneuma
     {
       EnergyBorder e;
       for (unsigned int j = 0; j < c.size(); ++j)
-        {
-          if (!c.has_B[j] || !c.has_C[j])
-            continue;
-          const double CC = c.C[j] * c.C[j];
-          if (CC == 0. || c.B[j].l2_norm() == 0.)
-            continue;
-          const double a = (c.B[j] * c.C[j]) / CC;
-          LA::Vector   d(c.B[j]);
-          d.add(-a, c.C[j]);
-          if (d.l2_norm() > round_off * c.B[j].l2_norm())
-            e.energy_form = false;
+        if (c.has_B[j] && c.has_C[j] && c.B[j].l2_norm() > 0.
+            && c.C[j].l2_norm() > 0.)
           e.kept.push_back(j);
-          e.alpha.push_back(a);
-        }
       const unsigned int m = e.kept.size();
+      e.X.reinit(m, m);
       e.AD.reinit(m, m);
+      if (m == 0)
+        return e;
+      // Each column its own row (gas, liquid level, volume constraint):
+      // X = diag(alpha_j), alpha_j = B_j.C_j / |C_j|^2. Rows of chambers
+      // whose only free wall is a shared one are parallel, so this comes
+      // first.
+      const auto off_span = [&](const FullMatrix<double> &X) {
+        for (unsigned int j = 0; j < m; ++j)
+          {
+            LA::Vector d(c.B[e.kept[j]]);
+            for (unsigned int i = 0; i < m; ++i)
+              if (X(i, j) != 0.)
+                d.add(-X(i, j), c.C[e.kept[i]]);
+            if (!(d.l2_norm() <= round_off * c.B[e.kept[j]].l2_norm()))
+              return true;
+          }
+        return false;
+      };
+      for (unsigned int j = 0; j < m; ++j)
+        e.X(j, j) =
+          (c.B[e.kept[j]] * c.C[e.kept[j]]) / (c.C[e.kept[j]] * c.C[e.kept[j]]);
+      if (off_span(e.X))
+        {
+          // Coupled rows (liquid and gas in one chamber): X from the
+          // normal equations (C C^T) X = C B, by the pseudo-inverse of the
+          // Gram matrix.
+          // Rows scaled to unit length: the Gram matrix then has a unit
+          // diagonal and its condition measures only the angles between
+          // the rows (a gas row is kappa times larger than a level row).
+          std::vector<double> norm(m);
+          for (unsigned int i = 0; i < m; ++i)
+            norm[i] = c.C[e.kept[i]].l2_norm();
+          LAPACKFullMatrix<double> gram(m, m);
+          for (unsigned int i = 0; i < m; ++i)
+            for (unsigned int j = 0; j < m; ++j)
+              gram(i, j) =
+                (c.C[e.kept[i]] * c.C[e.kept[j]]) / (norm[i] * norm[j]);
+          // Drops singular values below 1e-12 of the largest; the inverse
+          // lives in the factors (vmult), not in the entries.
+          gram.compute_inverse_svd(1e-12);
+          Vector<double> CB_j(m), X_j(m);
+          for (unsigned int j = 0; j < m; ++j)
+            {
+              for (unsigned int i = 0; i < m; ++i)
+                CB_j[i] = (c.C[e.kept[i]] * c.B[e.kept[j]]) / norm[i];
+              gram.vmult(X_j, CB_j);
+              for (unsigned int i = 0; i < m; ++i)
+                e.X(i, j) = X_j[i] / norm[i];
+            }
+          if (off_span(e.X))
+            e.energy_form = false;
+        }
+      // A D = X^T D over the kept unknowns: symmetric and negative
+      // semi-definite in the energy form.
       double scale = 0.;
       for (unsigned int i = 0; i < m; ++i)
         for (unsigned int j = 0; j < m; ++j)
           {
-            e.AD(i, j) = e.alpha[i] * c.D(e.kept[i], e.kept[j]);
-            scale      = std::max(scale, std::abs(e.AD(i, j)));
+            for (unsigned int k = 0; k < m; ++k)
+              e.AD(i, j) += e.X(k, i) * c.D(e.kept[k], e.kept[j]);
+            scale = std::max(scale, std::abs(e.AD(i, j)));
+          }
+      for (unsigned int i = 0; i < m; ++i)
+        for (unsigned int j = 0; j < i; ++j)
+          {
+            if (std::abs(e.AD(i, j) - e.AD(j, i)) > round_off * scale)
+              e.energy_form = false;
+            e.AD(i, j) = e.AD(j, i) = 0.5 * (e.AD(i, j) + e.AD(j, i));
           }
       FullMatrix<double> minus_AD(m, m);
       minus_AD.add(-1., e.AD);
@@ -143,9 +195,9 @@ namespace pneuma
       if (!report.energy_form)
         {
           report.negative = -1;
-          report.note = "the chamber terms are not of energy form (liquid and "
-                        "gas in one chamber): only the count under "
-                        "prescribed pressures is known";
+          report.note     = "the chamber terms are not of energy form (their "
+                            "columns are not in the span of their rows): only "
+                            "the count under prescribed pressures is known";
         }
       // A non-symmetric tangent (friction in slip, follower pressure on
       // free edges): Sylvester's law does not apply; count the negative

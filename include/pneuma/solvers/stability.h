@@ -9,18 +9,25 @@
  * The field block K (membrane, cables, contact; with follower-pressure
  * stiffness) is factorized by LDL^T (solvers/symmetric_inertia.h): its
  * inertia is that of the same state under prescribed pressures and
- * volumes. A chamber unknown lambda_j (gas pressure, liquid level) is
- * coupled by a column B_j = dr/dlambda_j and a row C_j = dg_j/du; in the
- * energy form they are proportional, B_j = alpha_j C_j^T, so that
- * \f[ M = \begin{pmatrix} K & B \\ B^T & A D \end{pmatrix},\qquad
- *     A = \mathrm{diag}(\alpha_j), \f]
- * is symmetric: A D = -1/kappa for a gas of stiffness kappa = -dp/dV
- * (amount control), -rho g / A_fs... for a liquid level, 0 for a volume
- * constraint. Eliminating lambda (A D < 0) or restricting to the
- * constraint (A D = 0) leaves one negative eigenvalue of M per chamber
+ * volumes. The coupled chamber unknowns lambda (gas pressure, liquid
+ * level) enter by columns B = dr/dlambda and rows C = dg/du. In the
+ * energy form the columns lie in the span of the rows, B = C^T X for an
+ * m x m matrix X (X = diag(alpha_j) when each row is its own column, as
+ * for a gas, B_j = -C_j^T, or a liquid level, B_j = -rho g C_j^T). The
+ * rows X^T [C D] are then an equivalent linearization of the chamber
+ * equations and
+ * \f[ M = \begin{pmatrix} K & B \\ B^T & X^T D \end{pmatrix} \f]
+ * is symmetric. For a gas of stiffness kappa = -dp/dV (amount control)
+ * X^T D = -1/kappa, for a liquid level -rho g A_fs, for a volume
+ * constraint 0. Liquid and gas in one chamber couple the two: the gas row
+ * is C_p = kappa (q - q_l) with D_ph = -kappa A_fs (its volume is the
+ * chamber's less the liquid's), the level row C_h = q_l, and
+ * X = [[-1/kappa, 0], [-1, -rho g]] gives X^T D = diag(-1/kappa,
+ * -rho g A_fs). Eliminating lambda (X^T D < 0) or restricting to the
+ * constraint (X^T D = 0) leaves one negative eigenvalue of M per chamber
  * unknown, so by Haynsworth's inertia additivity
  * \f[ n_-(\text{state}) = n_-(K) + n_-(S) - m,\qquad
- *     S = A D - B^T K^{-1} B, \f]
+ *     S = X^T D - B^T K^{-1} B, \f]
  * with m the coupled chamber unknowns (a prescribed pressure is not
  * coupled and drops out). S is m x m and costs m substitutions.
  *
@@ -59,8 +66,7 @@ namespace pneuma
       /// Zero pivots of K (a singular tangent: the counts are not exact).
       long long zero = 0;
       /// The chamber terms are of energy form, so that @p negative is the
-      /// count of the state (false, e.g., for liquid and gas in one
-      /// chamber: only negative_field is known).
+      /// count of the state (false: only negative_field is known).
       bool energy_form = true;
       /// |y.Kx - x.Ky| / (|Kx| |y|) for two fixed vectors.
       double asymmetry = 0.;
@@ -70,14 +76,15 @@ namespace pneuma
 
     /**
      * The coupled chamber unknowns of @p c in energy form: the kept
-     * unknowns j (a column B_j and a row C_j), alpha_j = B_j.C_j/|C_j|^2
-     * and A D (see above); energy_form is false if some B_j is not
-     * proportional to C_j^T or -A D has a negative eigenvalue.
+     * unknowns j (a column B_j and a row C_j), X with B = C^T X (least
+     * squares over the kept rows) and A D = X^T D (see above);
+     * energy_form is false if B is not in the span of the rows, X^T D is
+     * not symmetric or -X^T D has a negative eigenvalue.
      */
     struct EnergyBorder
     {
       std::vector<unsigned int>  kept;
-      std::vector<double>        alpha;
+      dealii::FullMatrix<double> X;
       dealii::FullMatrix<double> AD;
       bool                       energy_form = true;
       unsigned int
