@@ -203,7 +203,8 @@ namespace pneuma
                           const Phase              &phase,
                           const double              r_ref,
                           const ConditionalOStream &out,
-                          NewtonResult             &result) const
+                          NewtonResult             &result,
+                          const BorderedVector     *assembled) const
     {
       BorderedVector residual(u), trial(u), du(u), u_trial(u), Lx(u);
       // r_s(u) = r(u) + s L (u - u_anchor): the regularised residual.
@@ -224,7 +225,15 @@ namespace pneuma
       // Block norms of the first residual, for the table.
       std::vector<double> block_reference;
 
-      double r_norm = evaluate(u, residual);
+      // The caller's assembly at u serves the first iteration (unshifted).
+      double r_norm = 0.;
+      if (assembled && phase.shift == 0.)
+        {
+          residual = *assembled;
+          r_norm   = residual.l2_norm();
+        }
+      else
+        r_norm = evaluate(u, residual);
       for (unsigned int it = 0;; ++it)
         {
           if (print_table && block_reference.empty())
@@ -235,7 +244,9 @@ namespace pneuma
               result.failure_reason = "residual is not finite";
               return false;
             }
-          if (r_norm <= tolerance && (it > 0 || !pure))
+          // A state that meets the tolerance at once (a stage whose loads
+          // no longer change it) costs no factorization.
+          if (r_norm <= tolerance)
             {
               result.convergence_test = "residual";
               return true;
@@ -331,8 +342,9 @@ namespace pneuma
               for (unsigned int b = 0; b < blocks.size(); ++b)
                 out << "  "
                     << blocks[b]
-                         / (block_reference[b] > 0. ? block_reference[b]
-                                                    : r_ref);
+                         / (block_reference[b] > 1e-8 * r_ref
+                              ? block_reference[b]
+                              : r_ref);
               out << "  "
                   << step.alpha * du_norm / std::max(u_trial.l2_norm(), 1e-300)
                   << "  " << phase.shift << "  " << std::defaultfloat
@@ -435,7 +447,7 @@ namespace pneuma
       newton.max_iterations = max_iter;
       newton.tolerance      = residual_tolerance;
       const BorderedVector u_start(u);
-      if (iterate(problem, u, newton, r_ref, out, result))
+      if (iterate(problem, u, newton, r_ref, out, result, &r))
         {
           result.converged = true;
           return result;

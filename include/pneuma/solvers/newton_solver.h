@@ -161,13 +161,17 @@ namespace pneuma
         double tolerance = 0.;
       };
 
+      /// Newton iterations of @p phase from @p u. @p assembled: the
+      /// residual at @p u that the problem has just assembled (with its
+      /// tangent), so that the first iteration does not assemble again.
       bool
       iterate(NonlinearProblem         &problem,
               BorderedVector           &u,
               const Phase              &phase,
               const double              r_ref,
               const ConditionalOStream &out,
-              NewtonResult             &result) const;
+              NewtonResult             &result,
+              const BorderedVector     *assembled = nullptr) const;
 
       bool
       continuation(NonlinearProblem         &problem,
