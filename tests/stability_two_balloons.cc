@@ -14,6 +14,9 @@
 //    with increments of 0.1 and the LU factorization one step from
 //    l = 1.1 to 1.2 converged onto another equilibrium, a saddle with two
 //    eigenvalues of -2e4 N/m, which the check reported as unstable.
+//    Which steps are cut back from the flaccid start differs with the
+//    rounding (1 or 2 ranks), so this path prints its states only where a
+//    count is wrong.
 // Both balloons stay equal (no imperfection), on the symmetric branch.
 // Each balloon alone has one negative eigenvalue under prescribed pressure
 // past its pressure maximum at l = 7^(1/6) = 1.383 (tests/stability_sphere).
@@ -51,7 +54,9 @@ namespace
   std::map<std::string, double> lowest;
 
   bool
-  check_counts(const pneuma::RunResult &s, const std::string &mode)
+  check_counts(const pneuma::RunResult &s,
+               const std::string       &mode,
+               const bool               every_state = true)
   {
     lowest[mode]        = s.get("mode1_eigenvalue");
     const double V1     = s.history.front().get("c1_volume"),
@@ -75,7 +80,7 @@ namespace
           row.get("negative_eigenvalues_prescribed_pressure");
         above += l > l_crit;
         wrong += (full != full_ref) + (field != field_ref);
-        if (root)
+        if (root && (every_state || full != full_ref || field != field_ref))
           std::printf("%s, l = %.3f: negative eigenvalues: reference %g value "
                       "%g; under prescribed pressure: reference %g value %g\n",
                       mode.c_str(),
@@ -94,7 +99,14 @@ namespace
       && pneuma_test::check(mode + ": bifurcation stretch", l_c, l_crit, 5e-3);
     const bool ok = s.exit_code == 0 && states > 4 && above > 2 && wrong == 0
                     && s.summary.get("unstable_steps") >= above && ok_c;
-    if (root)
+    if (root && !every_state)
+      std::printf("%s: more than 4 states judged, more than 2 on the unstable "
+                  "symmetric branch, %u wrong counts, every unstable state "
+                  "reported %s\n",
+                  mode.c_str(),
+                  wrong,
+                  ok ? "PASS" : "FAIL");
+    else if (root)
       std::printf("%s: %u states, %u on the unstable symmetric branch, "
                   "%u wrong counts, %g reported unstable %s\n",
                   mode.c_str(),
@@ -135,7 +147,8 @@ main(int argc, char **argv)
                 {"Chambers/Chamber 1/Gas/Gas amount/Function expression",
                  "((1+t)^3-" + phi
                    + ")*(1+2000*(1/(1+t)-1/(1+t)^7)/101325)^(1/1.4)"}}),
-      "liquid and shared gas")
+      "liquid and shared gas",
+      false)
     && ok;
   // The antisymmetric mode changes neither the total volume nor (to first
   // order) the gas volume: at l = 2 its eigenvalue, the lowest, is the same

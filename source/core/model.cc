@@ -534,6 +534,37 @@ namespace pneuma
     tangent  = 0.;
     external = 0.;
     assemble_into(u, current_time, residual, &tangent, &external, coupling);
+    assembled_state    = u;
+    assembled_time     = current_time;
+    tangent_is_current = true;
+  }
+
+  bool
+  Model::tangent_is_at(const solvers::BorderedVector &u) const
+  {
+    if (!tangent_is_current || assembled_time != current_time
+        || assembled_state.border.size() != u.border.size()
+        || assembled_state.field.size() != u.field.size())
+      return false;
+    for (unsigned int j = 0; j < u.border.size(); ++j)
+      if (assembled_state.border[j] != u.border[j])
+        return false;
+    LA::Vector d(u.field);
+    d -= assembled_state.field;
+    return d.linfty_norm() == 0.;
+  }
+
+  bool
+  Model::newton_inertia(const solvers::BorderedVector &u,
+                        const double                   relative,
+                        solvers::Inertia              &inertia) const
+  {
+    if (factorized_shift != 0. || factorized_field.size() != u.field.size()
+        || !solver.inertia(inertia))
+      return false;
+    LA::Vector d(u.field);
+    d -= factorized_field;
+    return d.l2_norm() <= relative * u.field.l2_norm();
   }
 
   void
@@ -619,8 +650,13 @@ namespace pneuma
     {
       TimerOutput::Scope t(*timers, "linear solve");
       if (shift > 0.)
-        tangent.add(shift, laplacian);
+        {
+          tangent.add(shift, laplacian);
+          tangent_is_current = false;
+        }
       solver.factorize(tangent);
+      factorized_field = assembled_state.field;
+      factorized_shift = shift;
     }
     solve_again(rhs, du);
     ++linear_solves;

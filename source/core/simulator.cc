@@ -111,8 +111,11 @@ namespace pneuma
       impl->check_stability,
       "Count the negative eigenvalues of the tangent at every converged "
       "step, chamber terms included (MUMPS LDL^T of the field block and "
-      "the chamber Schur complement: one extra assembly and symmetric "
-      "factorization per step). An unstable state gets a warning.");
+      "the chamber Schur complement). With Newton's LDL^T factorization "
+      "the count is that of its last iterate (no extra cost; a changed "
+      "count is confirmed on the state's own factorization); with an LU, "
+      "one extra symmetric factorization per step. An unstable state gets "
+      "a warning.");
     prm.add_parameter(
       "Locate critical points",
       impl->locate_tolerance,
@@ -161,12 +164,12 @@ namespace pneuma
         // A factorization that fails (MUMPS workspace, a broken tangent)
         // leaves the state unjudged, never the run stopped.
         s.path.set_judge(
-          [&s](const solvers::BorderedVector &state) {
+          [&s](const solvers::BorderedVector &state, const bool exact) {
             if (!s.stability)
               s.stability = std::make_unique<solvers::StabilityCheck>(s.comm);
             try
               {
-                return s.stability->check(s.model, state);
+                return s.stability->check(s.model, state, exact);
               }
             catch (const std::exception &e)
               {

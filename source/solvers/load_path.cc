@@ -178,7 +178,7 @@ namespace pneuma
           const auto newton = newton_solver.solve(model, probe, quiet, false);
           if (!newton.converged || !model.check_state(probe).empty())
             break;
-          const StabilityReport r = stability_judge(probe);
+          const StabilityReport r = stability_judge(probe, true);
           if (!r.computed)
             break;
           (r.negative == before ? lo : hi) = mid;
@@ -225,7 +225,7 @@ namespace pneuma
           const auto newton = newton_solver.solve(model, probe, quiet, false);
           if (!newton.converged || !model.check_state(probe).empty())
             continue;
-          const StabilityReport r = stability_judge(probe);
+          const StabilityReport r = stability_judge(probe, true);
           if (!r.computed || r.negative < 0 || r.negative >= stability.negative)
             continue;
           LA::Vector away(probe.field);
@@ -300,7 +300,7 @@ namespace pneuma
           const BorderedVector probe = PathConstraintProblem::model_part(x);
           if (!newton.converged || !model.check_state(probe).empty())
             break;
-          const StabilityReport r = stability_judge(probe);
+          const StabilityReport r = stability_judge(probe, true);
           if (!r.computed)
             break;
           probes.push_back(
@@ -690,7 +690,12 @@ namespace pneuma
           bool            limit_located = false, switched = false;
           if (newton.converged && stability_judge)
             {
-              stability = stability_judge(result.state);
+              stability = stability_judge(result.state, false);
+              // A change counted on Newton's factorization (the tangent
+              // of the last iterate) is confirmed on the state's own.
+              if (stability.from_newton && previous_stability.computed
+                  && stability.negative != previous_stability.negative)
+                stability = stability_judge(result.state, true);
               if (locate_tolerance > 0. && stability.computed
                   && stability.energy_form && previous_stability.computed
                   && previous_stability.energy_form
@@ -738,7 +743,7 @@ namespace pneuma
                                    again);
                   result.state       = accepted;
                   model.current_time = t_new;
-                  stability          = stability_judge(result.state);
+                  stability          = stability_judge(result.state, true);
                   out << "  critical point: " << c.type << " at t = " << c.time
                       << " (+-" << 0.5 * c.bracket << "), negative eigenvalues "
                       << c.before << " -> " << c.after << ", " << c.probes

@@ -16,6 +16,9 @@ namespace pneuma
       /// Relative size below which a border eigenvalue or a deviation from
       /// proportionality is round-off.
       constexpr double round_off = 1e-8;
+      /// Newton's factorization counts for a converged state within this
+      /// relative distance of its iterate (Model::newton_inertia()).
+      constexpr double newton_reuse = 1e-5;
       /// Eigenvalues nearest zero whose real parts are counted for a
       /// non-symmetric tangent.
       constexpr unsigned int nearest_for_count = 6;
@@ -27,13 +30,22 @@ namespace pneuma
       const unsigned int m = S.m();
       if (m == 0)
         return 0;
+      // The unknowns have different units (a pressure, a level): the
+      // congruence d S d with d_i = |S_ii|^(-1/2) keeps the inertia
+      // (Sylvester) and brings the entries to one scale, so that the
+      // round-off threshold below does not take a small eigenvalue of one
+      // unit for zero.
+      std::vector<double> d(m, 1.);
+      for (unsigned int i = 0; i < m; ++i)
+        if (S(i, i) != 0.)
+          d[i] = 1. / std::sqrt(std::abs(S(i, i)));
       LAPACKFullMatrix<double> lapack(m, m);
       double                   scale = 0.;
       for (unsigned int i = 0; i < m; ++i)
         for (unsigned int j = 0; j < m; ++j)
           {
-            lapack(i, j) = 0.5 * (S(i, j) + S(j, i));
-            scale        = std::max(scale, std::abs(S(i, j)));
+            lapack(i, j) = 0.5 * (S(i, j) + S(j, i)) * d[i] * d[j];
+            scale        = std::max(scale, std::abs(lapack(i, j)));
           }
       lapack.compute_eigenvalues();
       long long n = 0;
@@ -153,18 +165,32 @@ namespace pneuma
     }
 
     StabilityReport
-    StabilityCheck::check(Model &model, const BorderedVector &state)
+    StabilityCheck::check(Model                &model,
+                          const BorderedVector &state,
+                          const bool            exact)
     {
       TimerOutput::Scope t(model.timer(), "stability");
       StabilityReport    report;
-      BorderedVector     residual;
-      residual.field.reinit(state.field);
-      model.assemble(state, residual);
+      // Newton's convergence test assembled the converged state already.
+      if (!model.tangent_is_at(state))
+        {
+          BorderedVector residual;
+          residual.field.reinit(state.field);
+          model.assemble(state, residual);
+        }
       const LA::SparseMatrix &K = model.tangent_matrix();
 
       report.asymmetry = asymmetry(K, model.locally_owned());
 
-      const Inertia k       = inertia.compute(K);
+      // Newton's last factorization, the LDL^T of the tangent at the
+      // iterate before the last (vanishing) update, counts at no cost;
+      // else (an LU, a shifted or older factorization) factorize here.
+      Inertia    k;
+      const bool reuse = !exact && report.asymmetry <= round_off
+                         && model.newton_inertia(state, newton_reuse, k);
+      if (!reuse)
+        k = inertia.compute(K);
+      report.from_newton    = reuse;
       report.negative_field = k.negative;
       report.zero           = k.zero;
       report.computed       = true;
@@ -186,7 +212,14 @@ namespace pneuma
           for (unsigned int j = 0; j < m; ++j)
             {
               Vector<double> z(B[j].size());
-              inertia.solve(B[j], z);
+              if (reuse)
+                {
+                  LA::Vector z_j(c.B[e.kept[j]]);
+                  model.linear_solver().solve(K, z_j, c.B[e.kept[j]]);
+                  z = z_j;
+                }
+              else
+                inertia.solve(B[j], z);
               for (unsigned int i = 0; i < m; ++i)
                 S(i, j) = e.AD(i, j) - B[i] * z;
             }

@@ -53,8 +53,9 @@ namespace pneuma
       id.icntl[2]       = -1;
       id.icntl[3]       = 0;
       // ICNTL(13) = 1: no ScaLAPACK root, whose pivots INFOG(12) would not
-      // count; the Newton solves (no threshold) need no count.
-      id.icntl[12] = zero_pivot_threshold > 0. ? 1 : 0;
+      // count in parallel (Newton's factorizations give the stability
+      // count too).
+      id.icntl[12] = 1;
       id.icntl[17] = 3; // ICNTL(18): distributed triplets
       // ICNTL(24): detect null pivots (or, without a threshold, fail on
       // them).
@@ -124,6 +125,7 @@ namespace pneuma
       result.negative = id.sym == 0 ? 0 : id.infog[11]; // INFOG(12)
       result.zero     = id.infog[27];                   // INFOG(28)
       result.positive = A.m() - result.negative - result.zero;
+      last_inertia    = result;
       return result;
     }
     void

@@ -247,6 +247,25 @@ namespace pneuma
       return pcout;
     }
 
+    /**
+     * The model's tangent and border blocks are those of @p u at the
+     * model's time (its last assemble(), no shift added since), so a
+     * check of the converged state need not assemble again.
+     */
+    bool
+    tangent_is_at(const solvers::BorderedVector &u) const;
+
+    /**
+     * The inertia of Newton's last factorization if it is the LDL^T of the
+     * unshifted tangent (Linear solver/direct/Factorization) at a field
+     * within @p relative of @p u (|u - u_k| <= relative |u|, e.g. the
+     * iterate before the last, vanishing update); false otherwise.
+     */
+    bool
+    newton_inertia(const solvers::BorderedVector &u,
+                   const double                   relative,
+                   solvers::Inertia              &inertia) const;
+
     // ---- NonlinearProblem
     void
     assemble(const solvers::BorderedVector &u,
@@ -391,5 +410,13 @@ namespace pneuma
     std::string              restart;
     /// Solver counts at the last commit_step() (for checkpoints).
     std::vector<unsigned int> committed_counts = {0, 0, 0};
+    /// The state, time and validity of the tangent's last assembly
+    /// (tangent_is_at()).
+    solvers::BorderedVector assembled_state;
+    double                  assembled_time     = 0.;
+    bool                    tangent_is_current = false;
+    /// The field and shift of the last factorization (newton_inertia()).
+    LA::Vector factorized_field;
+    double     factorized_shift = -1.;
   };
 } // namespace pneuma

@@ -115,6 +115,17 @@ namespace pneuma
         return last_factorization;
       }
 
+      /// The inertia of the current factorization if it is an LDL^T of
+      /// the last factorized matrix (not stale); false otherwise.
+      bool
+      inertia(Inertia &result) const
+      {
+        if (solver_type != "direct" || !use_symmetric || !symmetric || stale)
+          return false;
+        result = symmetric->last();
+        return true;
+      }
+
       /// Entries of the factors and floating-point operations of the last
       /// MUMPS factorization (INFOG(29), RINFOG(3); 0 for KLU and AMG).
       double

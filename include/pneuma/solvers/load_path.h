@@ -193,7 +193,11 @@ namespace pneuma
       }
 
       /// Judges the stability of a converged state before it is committed.
-      using Judge = std::function<StabilityReport(const BorderedVector &)>;
+      /// @p exact: factorize the state's own tangent (the probes that
+      /// locate a critical point) rather than count on Newton's last
+      /// factorization.
+      using Judge =
+        std::function<StabilityReport(const BorderedVector &, bool exact)>;
       /**
        * Judge every converged state with @p judge; where the count
        * changes between two steps, bisect in pseudo time until the bracket

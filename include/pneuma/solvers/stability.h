@@ -70,6 +70,9 @@ namespace pneuma
       bool energy_form = true;
       /// |y.Kx - x.Ky| / (|Kx| |y|) for two fixed vectors.
       double asymmetry = 0.;
+      /// The counts came from Newton's last LDL^T factorization (no extra
+      /// factorization).
+      bool from_newton = false;
       /// Why the count is not exact (empty: it is).
       std::string note;
     };
@@ -111,10 +114,13 @@ namespace pneuma
     public:
       explicit StabilityCheck(const MPI_Comm comm);
 
-      /// Assemble the tangent at @p state (the model is at its time) and
-      /// count.
+      /// Count at @p state (the model is at its time; assembled there if
+      /// it is not). Newton's last LDL^T factorization counts if it is
+      /// close enough (doc/theory.md section 11), unless @p exact.
       StabilityReport
-      check(Model &model, const BorderedVector &state);
+      check(Model                &model,
+            const BorderedVector &state,
+            const bool            exact = false);
 
     private:
       SymmetricInertia inertia;

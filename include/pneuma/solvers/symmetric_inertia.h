@@ -83,6 +83,13 @@ namespace pneuma
       void
       solve(const LA::Vector &b, LA::Vector &x);
 
+      /// The inertia of the last compute().
+      const Inertia &
+      last() const
+      {
+        return last_inertia;
+      }
+
       /// Entries of the factors (INFOG(29)) and floating-point operations
       /// of the last factorization (RINFOG(3)).
       double
@@ -93,6 +100,7 @@ namespace pneuma
     private:
       struct Data;
       std::unique_ptr<Data> data;
+      Inertia               last_inertia;
     };
   } // namespace solvers
 } // namespace pneuma
