@@ -26,8 +26,9 @@ namespace pneuma
       prm.enter_subsection("Linear solver");
       prm.add_parameter("Type",
                         solver_type,
-                        "direct: sparse LU (MUMPS or KLU through Trilinos "
-                        "Amesos); amg: GMRES preconditioned by Trilinos ML "
+                        "direct: sparse LDL^T or LU (MUMPS; or KLU through "
+                        "Trilinos Amesos); amg: GMRES preconditioned by "
+                        "Trilinos ML "
                         "algebraic multigrid. Each type's settings are in "
                         "the subsection of its name.",
                         Patterns::Selection("direct|amg"));
@@ -48,8 +49,9 @@ namespace pneuma
         "Factorization",
         direct_settings.factorization,
         "MUMPS' factorization. LDLT: the symmetric indefinite LDL^T (half "
-        "the work and memory of LU; only the upper triangle is read, so the "
-        "tangent must be symmetric); LU: the general one (friction in "
+        "the factor entries and about 55 % of the work of LU; only the upper "
+        "triangle is read, so the tangent must be symmetric); LU: the "
+        "general one (friction in "
         "slip, follower pressure on free edges); automatic: LDLT for every "
         "tangent whose measured asymmetry is below 1e-10, else LU. With "
         "Package = Amesos_Klu always LU.",
