@@ -139,9 +139,8 @@ namespace pneuma
                                  "tangent)"));
         }
       ++factorizations;
-      stale              = false;
-      use_symmetric      = true;
-      last_factorization = "LDLT";
+      stale         = false;
+      use_symmetric = true;
     }
 
     double
@@ -152,10 +151,7 @@ namespace pneuma
       if (use_symmetric && symmetric)
         return symmetric->factor_entries();
       if (auto *mumps = dynamic_cast<Amesos_Mumps *>(direct.get()))
-        {
-          const int entries = mumps->GetINFOG()[28];
-          return entries < 0 ? -1e6 * entries : static_cast<double>(entries);
-        }
+        return mumps_count(mumps->GetINFOG()[28]);
       return 0.;
     }
 
@@ -296,8 +292,7 @@ namespace pneuma
                                  "tangent)"));
         }
       ++factorizations;
-      stale              = false;
-      last_factorization = "LU";
+      stale = false;
     }
 
     void

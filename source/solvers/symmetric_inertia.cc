@@ -33,7 +33,29 @@ namespace pneuma
             + " with INFOG(1) = " + std::to_string(id.infog[0])
             + ", INFOG(2) = " + std::to_string(id.infog[1]));
       }
+
+      /// Solve with the factors for @p nrhs right-hand sides of length
+      /// @p n, column-major in @p rhs on the host (nullptr elsewhere),
+      /// overwritten by the solutions (ICNTL(20) = ICNTL(21) = 0:
+      /// centralized right-hand side and solution).
+      void
+      solve_on_host(double *rhs, const std::size_t n, const std::size_t nrhs)
+      {
+        id.icntl[19] = 0;
+        id.icntl[20] = 0;
+        id.nrhs      = static_cast<MUMPS_INT>(nrhs);
+        id.lrhs      = static_cast<MUMPS_INT>(n);
+        id.rhs       = rhs;
+        call(3);
+        id.nrhs = 1;
+      }
     };
+
+    double
+    mumps_count(const int infog)
+    {
+      return infog < 0 ? -1e6 * infog : static_cast<double>(infog);
+    }
 
     SymmetricInertia::SymmetricInertia(const MPI_Comm comm,
                                        const double   zero_pivot_threshold,
@@ -146,13 +168,7 @@ namespace pneuma
       if (host)
         for (std::size_t j = 0; j < b.size(); ++j)
           std::copy(b[j].begin(), b[j].end(), block.begin() + j * n);
-      id.icntl[19] = 0;
-      id.icntl[20] = 0;
-      id.nrhs      = static_cast<MUMPS_INT>(b.size());
-      id.lrhs      = static_cast<MUMPS_INT>(n);
-      id.rhs       = host ? block.data() : nullptr;
-      d.call(3);
-      id.nrhs = 1;
+      d.solve_on_host(host ? block.data() : nullptr, n, b.size());
       for (std::size_t j = 0; j < b.size(); ++j)
         {
           x[j].reinit(n);
@@ -173,15 +189,9 @@ namespace pneuma
       const bool      host =
         dealii::Utilities::MPI::this_mpi_process(MPI_Comm_f2c(id.comm_fortran))
         == 0;
-      // Centralized right-hand side and solution on the host (ICNTL(20) =
-      // ICNTL(21) = 0), then shared.
-      x            = b;
-      id.icntl[19] = 0;
-      id.icntl[20] = 0;
-      id.nrhs      = 1;
-      id.lrhs      = static_cast<MUMPS_INT>(x.size());
-      id.rhs       = host ? x.data() : nullptr;
-      d.call(3);
+      // Solved on the host, then shared.
+      x = b;
+      d.solve_on_host(host ? x.data() : nullptr, x.size(), 1);
       x =
         dealii::Utilities::MPI::broadcast(MPI_Comm_f2c(id.comm_fortran), x, 0);
     }
@@ -242,13 +252,7 @@ namespace pneuma
       if (host)
         for (std::size_t k = 0; k < all_indices.size(); ++k)
           rhs[all_indices[k]] = all_values[k];
-      // Centralized right-hand side and solution on the host.
-      id.icntl[19] = 0;
-      id.icntl[20] = 0;
-      id.nrhs      = 1;
-      id.lrhs      = static_cast<MUMPS_INT>(b.size());
-      id.rhs       = host ? rhs.data() : nullptr;
-      d.call(3);
+      d.solve_on_host(host ? rhs.data() : nullptr, b.size(), 1);
       // Back in the gathered order, then to the owners.
       if (host)
         for (std::size_t k = 0; k < all_indices.size(); ++k)
@@ -272,9 +276,7 @@ namespace pneuma
     double
     SymmetricInertia::factor_entries() const
     {
-      // INFOG(29), or -INFOG(29) millions when negative.
-      const auto entries = data->id.infog[28];
-      return entries < 0 ? -1e6 * entries : static_cast<double>(entries);
+      return mumps_count(data->id.infog[28]); // INFOG(29)
     }
 
     double

@@ -108,11 +108,13 @@ namespace pneuma
       }
 
       /// The factorization of the last factorize(): "LDLT", "LU" or ""
-      /// (AMG).
-      const std::string &
+      /// (none yet, or AMG).
+      std::string
       factorization() const
       {
-        return last_factorization;
+        if (solver_type != "direct" || factorizations == 0)
+          return "";
+        return use_symmetric ? "LDLT" : "LU";
       }
 
       /// The inertia of the current factorization if it is an LDL^T of
@@ -201,8 +203,7 @@ namespace pneuma
       /// the sparsity does not change).
       std::unique_ptr<SymmetricInertia> symmetric;
       /// The active factorization is the LDL^T.
-      bool        use_symmetric = false;
-      std::string last_factorization;
+      bool use_symmetric = false;
       /// The forcing term of set_forcing().
       double forcing = 0.;
       /// True while the factors are those of an earlier tangent (reuse).

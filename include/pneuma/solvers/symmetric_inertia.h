@@ -42,6 +42,11 @@ namespace pneuma
       dealii::types::global_dof_index negative = 0, zero = 0, positive = 0;
     };
 
+    /// A MUMPS count such as INFOG(29), which is minus the count in
+    /// millions when negative.
+    double
+    mumps_count(const int infog);
+
     /// Inertia by MUMPS' symmetric indefinite factorization.
     class SymmetricInertia
     {
