@@ -202,6 +202,14 @@ namespace pneuma
     for (const auto &s : subsystems)
       s->add_kinematic_constraints(kinematic);
     kinematic.close();
+    // Whether any rank has kinematic constraints: applying them is a
+    // collective operation, and a rank that owns no plate or hanging node
+    // must still take part (a local test hung 2 ranks on a tube with one
+    // rigid end plate).
+    any_kinematic = Utilities::MPI::max(static_cast<unsigned int>(
+                                          kinematic.n_constraints() > 0),
+                                        comm)
+                    > 0;
 
     update_constraints.clear();
     update_constraints.reinit(relevant);
@@ -245,7 +253,7 @@ namespace pneuma
   Model::apply_kinematic_constraints(LA::Vector &field)
   {
     // Dependent dofs follow their masters after prescribed values changed.
-    if (kinematic.n_constraints() == 0)
+    if (!any_kinematic)
       return;
     ghost(field);
     for (const auto i : owned)

@@ -398,9 +398,11 @@ namespace pneuma
 
     dealii::IndexSet                  owned, relevant;
     dealii::AffineConstraints<double> kinematic, update_constraints;
-    LA::SparseMatrix                  tangent, laplacian;
-    LA::Vector                        external, ghosted;
-    solvers::BorderCoupling           coupling;
+    /// Some rank has kinematic constraints (the same on every rank).
+    bool                    any_kinematic = false;
+    LA::SparseMatrix        tangent, laplacian;
+    LA::Vector              external, ghosted;
+    solvers::BorderCoupling coupling;
     /// Border blocks of assemble_residual(), thrown away.
     solvers::BorderCoupling scratch_coupling;
     /// Mode shapes of the next write_output() (ghosted).
