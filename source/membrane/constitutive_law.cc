@@ -1,6 +1,7 @@
 #include <pneuma/core/input_error.h>
 #include <pneuma/core/input_layout.h>
 #include <pneuma/membrane/constitutive_law.h>
+#include <pneuma/membrane/tension_field.h>
 
 namespace pneuma
 {
@@ -38,6 +39,22 @@ namespace pneuma
             "analysis (density * thickness per reference "
             "area).",
             Patterns::Double(0.));
+          prm.add_parameter(
+            "Wrinkling",
+            slot->wrinkling,
+            "none: the law carries compression; tension field: the "
+            "membrane wrinkles instead (relaxed energy of tension field "
+            "theory, any law): every point is taut, wrinkled (uniaxial "
+            "tension) or slack, shown by the VTU fields wrinkling_state, "
+            "wrinkle_direction and relaxed_compression.",
+            Patterns::Selection("none|tension field"));
+          prm.add_parameter(
+            "Wrinkling residual stiffness",
+            slot->residual_stiffness,
+            "Fraction eps of the plain law kept where wrinkled or slack "
+            "(energy W_relaxed + eps W), so that a slack patch keeps a "
+            "regular tangent; 0 <= eps < 1e-2.",
+            Patterns::Double(0.));
           slot->laws = laws.declare_all(prm);
           prm.leave_subsection();
           slots.push_back(std::move(slot));
@@ -66,6 +83,19 @@ namespace pneuma
           m.law       = LawRegistry::instance().take(
             slot->laws, prm, slot->law, path + "/Law", path);
           prm.leave_subsection();
+          if (slot->wrinkling == "tension field")
+            {
+              check_input(slot->residual_stiffness < 1e-2,
+                          path + "/Wrinkling residual stiffness",
+                          "must be below 1e-2 (a fraction of the law kept "
+                          "in compression), got "
+                            + std::to_string(slot->residual_stiffness));
+              auto relaxed =
+                std::make_shared<TensionFieldLaw>(m.law,
+                                                  slot->residual_stiffness);
+              m.tension_field = relaxed;
+              m.law           = relaxed;
+            }
           regions[slot->id] = m;
         }
       prm.leave_subsection();
@@ -88,6 +118,15 @@ namespace pneuma
           }()
           + ")");
       return it->second;
+    }
+
+    bool
+    MaterialRegions::any_wrinkling() const
+    {
+      for (const auto &[id, m] : regions)
+        if (m.tension_field)
+          return true;
+      return false;
     }
 
     std::vector<types::material_id>

@@ -662,6 +662,19 @@ namespace pneuma
           statistics.add_vector(
             run, "applied_load", "N", applied, Statistics::summary);
         }
+      if (materials.any_wrinkling())
+        {
+          const auto w = postprocess::wrinkling_summary(*mapping_cache,
+                                                        dofs,
+                                                        materials,
+                                                        field);
+          statistics.add(
+            run, "wrinkled_area", "m^2", w.areas[1], Statistics::report);
+          statistics.add(
+            run, "slack_area", "m^2", w.areas[2], Statistics::report);
+          statistics.add(
+            run, "plain_minor_force", "N/m", w.minor_force, Statistics::report);
+        }
       if (scene.is_closed())
         {
           statistics.add(run,

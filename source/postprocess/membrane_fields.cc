@@ -3,9 +3,12 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <pneuma/membrane/surface_kinematics.h>
+#include <pneuma/membrane/tension_field.h>
 #include <pneuma/postprocess/membrane_fields.h>
 
+#include <array>
 #include <cmath>
+#include <limits>
 
 namespace pneuma
 {
@@ -36,6 +39,15 @@ namespace pneuma
                  "E2",
                  "thickness_stretch",
                  "material_region"};
+      // Wrinkling fields only where a region wrinkles.
+      const bool wrinkling = materials.any_wrinkling();
+      if (wrinkling)
+        for (const std::string name : {"wrinkling_state",
+                                       "wrinkle_direction_x",
+                                       "wrinkle_direction_y",
+                                       "wrinkle_direction_z",
+                                       "relaxed_compression"})
+          f.names.push_back(name);
       const unsigned int n_cells =
         dof_handler.get_triangulation().n_active_cells();
       f.values.assign(f.names.size(), Vector<double>(n_cells));
@@ -60,6 +72,11 @@ namespace pneuma
             SymmetricTensor<2, 2> E_avg;
             Tensor<1, 3>          normal_avg;
             double                l3 = 0., area = 0.;
+            // Wrinkling: area per state, tension direction (current,
+            // sign-aligned), relaxed compression.
+            std::array<double, 3> state_area{{0., 0., 0.}};
+            Tensor<1, 3>          wrinkle;
+            double                compression = 0.;
             for (unsigned int q = 0; q < quadrature.size(); ++q)
               {
                 const auto frame =
@@ -74,6 +91,20 @@ namespace pneuma
                   w * membrane::membrane_forces(a, S, material.thickness);
                 E_avg += w * 0.5 * (C - unit_symmetric_tensor<2>());
                 l3 += w * material.law->thickness_stretch(C);
+                if (material.tension_field)
+                  {
+                    const auto state = material.tension_field->state(C);
+                    state_area[state.kind] += w;
+                    compression += w * material.thickness
+                                   * std::min(state.plain_minor_stress, 0.);
+                    if (state.kind == membrane::WrinklingState::wrinkled)
+                      {
+                        Tensor<1, 3> d = state.tension_direction[0] * a[0]
+                                         + state.tension_direction[1] * a[1];
+                        d /= d.norm();
+                        wrinkle += (d * wrinkle < 0. ? -w : w) * d;
+                      }
+                  }
                 normal_avg += w * cross_product_3d(a[0], a[1]);
                 area += w;
               }
@@ -114,8 +145,66 @@ namespace pneuma
             f.values[15][k] = m - r;
             f.values[16][k] = l3;
             f.values[17][k] = cell->material_id();
+            if (wrinkling)
+              {
+                // The state that covers most of the cell.
+                unsigned int s = 0;
+                for (unsigned int i = 1; i < 3; ++i)
+                  if (state_area[i] > state_area[s])
+                    s = i;
+                f.values[18][k] = s;
+                if (wrinkle.norm() > 0.)
+                  wrinkle /= wrinkle.norm();
+                for (unsigned int d = 0; d < 3; ++d)
+                  f.values[19 + d][k] = wrinkle[d];
+                f.values[22][k] = compression / area;
+              }
           }
       return f;
+    }
+
+    WrinklingSummary
+    wrinkling_summary(const Mapping<2, 3>             &mapping,
+                      const DoFHandler<2, 3>          &dof_handler,
+                      const membrane::MaterialRegions &materials,
+                      const LA::Vector                &u)
+    {
+      WrinklingSummary result;
+      auto            &areas = result.areas;
+      double           minor = std::numeric_limits<double>::max();
+      const QGauss<2>  quadrature(dof_handler.get_fe().degree + 1);
+      FEValues<2, 3>   fe_values(mapping,
+                               dof_handler.get_fe(),
+                               quadrature,
+                               update_gradients | update_normal_vectors
+                                 | update_JxW_values);
+      const FEValuesExtractors::Vector displacement(0);
+      std::vector<Tensor<2, 3>>        grad_u(quadrature.size());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const auto &material = materials[cell->material_id()];
+            if (!material.tension_field)
+              continue;
+            fe_values.reinit(cell);
+            fe_values[displacement].get_function_gradients(u, grad_u);
+            for (unsigned int q = 0; q < quadrature.size(); ++q)
+              {
+                const auto frame =
+                  membrane::tangent_frame(fe_values.normal_vector(q));
+                const auto C = membrane::right_cauchy_green(
+                  membrane::deformed_tangents(frame, grad_u[q]));
+                const auto state = material.tension_field->state(C);
+                areas[state.kind] += fe_values.JxW(q);
+                minor = std::min(minor,
+                                 material.thickness * state.plain_minor_stress);
+              }
+          }
+      const MPI_Comm comm = dof_handler.get_communicator();
+      for (auto &a : areas)
+        a = Utilities::MPI::sum(a, comm);
+      result.minor_force = Utilities::MPI::min(minor, comm);
+      return result;
     }
   } // namespace postprocess
 } // namespace pneuma

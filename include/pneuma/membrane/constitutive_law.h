@@ -74,6 +74,8 @@ namespace pneuma
     /// The registry of membrane laws.
     using LawRegistry = Registry<ConstitutiveLaw>;
 
+    class TensionFieldLaw;
+
     /// The material of one region (material id) of the membrane mesh.
     struct RegionMaterial
     {
@@ -81,6 +83,9 @@ namespace pneuma
       double                           thickness = 1e-3;
       double                           density   = 0.;
       std::shared_ptr<ConstitutiveLaw> law;
+      /// The law relaxed by tension field theory (the same object as law)
+      /// where the region wrinkles, else null.
+      std::shared_ptr<const TensionFieldLaw> tension_field;
     };
 
     /**
@@ -107,6 +112,10 @@ namespace pneuma
       std::vector<dealii::types::material_id>
       ids() const;
 
+      /// Whether any region wrinkles (tension field theory).
+      bool
+      any_wrinkling() const;
+
     private:
       /// One declared region: bound values and every law's constants.
       struct Slot
@@ -115,6 +124,8 @@ namespace pneuma
         std::string                law       = "Saint Venant-Kirchhoff";
         double                     thickness = 1e-3;
         double                     density   = 0.;
+        std::string                wrinkling = "none";
+        double                     residual_stiffness = 1e-6;
         std::map<std::string, std::unique_ptr<ConstitutiveLaw>> laws;
       };
       std::vector<std::unique_ptr<Slot>>                   slots;

@@ -1,0 +1,235 @@
+#include <pneuma/core/input_error.h>
+#include <pneuma/membrane/tension_field.h>
+
+#include <cmath>
+#include <limits>
+
+namespace pneuma
+{
+  namespace membrane
+  {
+    using namespace dealii;
+
+    namespace
+    {
+      /// The symmetric dyad sym(a x b) of two 2-vectors.
+      SymmetricTensor<2, 2>
+      sym_dyad(const Tensor<1, 2> &a, const Tensor<1, 2> &b)
+      {
+        SymmetricTensor<2, 2> t;
+        t[0][0] = a[0] * b[0];
+        t[1][1] = a[1] * b[1];
+        t[0][1] = 0.5 * (a[0] * b[1] + a[1] * b[0]);
+        return t;
+      }
+
+      /// Smallest eigenvalue of a symmetric 2x2 tensor (no discriminant of
+      /// round-off sign).
+      double
+      min_eigenvalue(const SymmetricTensor<2, 2> &A)
+      {
+        return 0.5 * (A[0][0] + A[1][1])
+               - std::hypot(0.5 * (A[0][0] - A[1][1]), A[0][1]);
+      }
+
+      Tensor<1, 2>
+      unit(const double angle)
+      {
+        Tensor<1, 2> m;
+        m[0] = std::cos(angle);
+        m[1] = std::sin(angle);
+        return m;
+      }
+    } // namespace
+
+    TensionFieldLaw::TensionFieldLaw(std::shared_ptr<const ConstitutiveLaw> law,
+                                     const double residual_stiffness)
+      : law(std::move(law))
+      , residual_stiffness(residual_stiffness)
+      , C_free(unit_symmetric_tensor<2>())
+    {
+      // The stress-free metric: Newton on S(C_0) = 0 from I (one step or
+      // none for the laws without prestress, whose S(I) = 0).
+      SymmetricTensor<2, 2> S;
+      SymmetricTensor<4, 2> D;
+      for (unsigned int it = 0; it < 50; ++it)
+        {
+          this->law->evaluate(C_free, S, D);
+          if (S.norm() <= 1e-14 * this->law->initial_shear_modulus())
+            break;
+          // dS = D : dE = D : dC/2.
+          C_free -= 2. * (invert(D) * S);
+        }
+    }
+
+    WrinklingState
+    TensionFieldLaw::solve(const SymmetricTensor<2, 2> &C,
+                           SymmetricTensor<2, 2>       &S_star,
+                           SymmetricTensor<4, 2>       &D_star,
+                           double                      &beta,
+                           Tensor<1, 2>                &m) const
+    {
+      WrinklingState state;
+      law->evaluate(C, S_star, D_star);
+      beta                     = 0.;
+      state.C_star             = C;
+      const double s_min       = min_eigenvalue(S_star);
+      state.plain_minor_stress = s_min;
+      if (s_min >= 0.)
+        return state;
+
+      if (min_eigenvalue(C_free - C) >= 0.)
+        {
+          state.kind   = WrinklingState::slack;
+          state.C_star = C_free;
+          S_star       = SymmetricTensor<2, 2>();
+          D_star       = SymmetricTensor<4, 2>();
+          return state;
+        }
+
+      // Wrinkled: beta and the angle of m with S(C + beta m x m) m = 0.
+      const double scale      = S_star.norm();
+      const double mu         = law->initial_shear_modulus();
+      const double tol        = 1e-13 * scale + 1e-15 * mu;
+      const auto   eig        = eigenvectors(S_star);
+      double       angle      = std::atan2(eig[1].second[1], eig[1].second[0]);
+      m                       = unit(angle);
+      SymmetricTensor<2, 2> M = sym_dyad(m, m);
+
+      // Beta along the fixed direction first: f(beta) = M : S* increases
+      // with beta (f' = M:D:M/2 > 0) from f(0) = s_min < 0.
+      for (unsigned int it = 0; it < 50; ++it)
+        {
+          law->evaluate(C + beta * M, S_star, D_star);
+          const double f  = M * S_star;
+          const double df = 0.5 * (M * (D_star * M));
+          if (std::abs(f) <= tol || !(df > 0.))
+            break;
+          beta = std::max(beta - f / df, 0.5 * beta);
+        }
+
+      // Both unknowns: r = (m.S*m, p.S*m) = (M:S*, P:S*).
+      bool converged = false;
+      for (unsigned int it = 0; it < 50; ++it)
+        {
+          m                             = unit(angle);
+          const Tensor<1, 2> p          = unit(angle + 0.5 * numbers::PI);
+          M                             = sym_dyad(m, m);
+          const SymmetricTensor<2, 2> P = sym_dyad(m, p);
+          law->evaluate(C + beta * M, S_star, D_star);
+          const double r0 = M * S_star, r1 = P * S_star;
+          if (std::hypot(r0, r1) <= tol)
+            {
+              converged = true;
+              break;
+            }
+          const SymmetricTensor<2, 2> DM = D_star * M, DP = D_star * P;
+          const double                J00 = 0.5 * (M * DM);
+          const double                J01 = 2. * r1 + beta * (M * DP);
+          const double                J10 = 0.5 * (P * DM);
+          const double J11 = (sym_dyad(p, p) - M) * S_star + beta * (P * DP);
+          const double det = J00 * J11 - J01 * J10;
+          if (!(std::abs(det) > 0.))
+            break;
+          double d_beta  = -(J11 * r0 - J01 * r1) / det;
+          double d_angle = -(-J10 * r0 + J00 * r1) / det;
+          // Stay on beta >= 0.
+          if (beta + d_beta < 0.)
+            {
+              const double f = 0.5 * beta / -d_beta;
+              d_beta *= f;
+              d_angle *= f;
+            }
+          beta += d_beta;
+          angle += d_angle;
+        }
+      const Tensor<1, 2> p = unit(angle + 0.5 * numbers::PI);
+      const double       t = p * (S_star * p);
+      if (!converged || !(beta >= 0.) || !(t > 0.))
+        {
+          // Not a wrinkled state of this law: report failure through the
+          // residual (not finite), which cuts the load step back.
+          S_star = std::numeric_limits<double>::quiet_NaN()
+                   * unit_symmetric_tensor<2>();
+          state.kind = WrinklingState::wrinkled;
+          return state;
+        }
+      state.kind              = WrinklingState::wrinkled;
+      state.C_star            = C + beta * M;
+      state.tension_direction = p;
+      return state;
+    }
+
+    WrinklingState
+    TensionFieldLaw::state(const SymmetricTensor<2, 2> &C) const
+    {
+      SymmetricTensor<2, 2> S;
+      SymmetricTensor<4, 2> D;
+      double                beta;
+      Tensor<1, 2>          m;
+      return solve(C, S, D, beta, m);
+    }
+
+    void
+    TensionFieldLaw::evaluate(const SymmetricTensor<2, 2> &C,
+                              SymmetricTensor<2, 2>       &S,
+                              SymmetricTensor<4, 2>       &D) const
+    {
+      double               beta;
+      Tensor<1, 2>         m;
+      const WrinklingState state = solve(C, S, D, beta, m);
+      if (state.kind == WrinklingState::wrinkled && beta > 0.)
+        {
+          // dS_r/dE = D* - [a_M/2, beta a_P] J^-1 [a_M; a_P], with
+          // a_M = D*:M, a_P = D*:P, at r = 0 (doc/theory.md): symmetric.
+          const Tensor<1, 2> p =
+            unit(std::atan2(m[1], m[0]) + 0.5 * numbers::PI);
+          const SymmetricTensor<2, 2> M  = sym_dyad(m, m);
+          const SymmetricTensor<2, 2> P  = sym_dyad(m, p);
+          const SymmetricTensor<2, 2> aM = D * M, aP = D * P;
+          const double                J00 = 0.5 * (M * aM);
+          const double                J01 = beta * (M * aP);
+          const double                J10 = 0.5 * (P * aM);
+          const double                J11 = p * (S * p) + beta * (P * aP);
+          const double                det = J00 * J11 - J01 * J10;
+          const SymmetricTensor<2, 2> b0  = (J11 * aM - J01 * aP) / det;
+          const SymmetricTensor<2, 2> b1  = (-J10 * aM + J00 * aP) / det;
+          D -= 0.25 * (outer_product(aM, b0) + outer_product(b0, aM))
+               + 0.5 * beta * (outer_product(aP, b1) + outer_product(b1, aP));
+        }
+      else if (state.kind == WrinklingState::wrinkled)
+        {
+          // On the taut boundary (beta = 0): the limit D - a_M a_M/(M:D:M).
+          const SymmetricTensor<2, 2> M  = sym_dyad(m, m);
+          const SymmetricTensor<2, 2> aM = D * M;
+          D -= outer_product(aM, aM) / (M * aM);
+        }
+      if (residual_stiffness > 0. && state.kind != WrinklingState::taut)
+        {
+          SymmetricTensor<2, 2> S0;
+          SymmetricTensor<4, 2> D0;
+          law->evaluate(C, S0, D0);
+          S += residual_stiffness * S0;
+          D += residual_stiffness * D0;
+        }
+      else if (residual_stiffness > 0.)
+        {
+          S *= 1. + residual_stiffness;
+          D *= 1. + residual_stiffness;
+        }
+    }
+
+    double
+    TensionFieldLaw::strain_energy(const SymmetricTensor<2, 2> &C) const
+    {
+      return law->strain_energy(state(C).C_star)
+             + residual_stiffness * law->strain_energy(C);
+    }
+
+    double
+    TensionFieldLaw::thickness_stretch(const SymmetricTensor<2, 2> &C) const
+    {
+      return law->thickness_stretch(state(C).C_star);
+    }
+  } // namespace membrane
+} // namespace pneuma
