@@ -17,6 +17,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <memory>
 #include <string>
 #include <utility>
@@ -63,14 +64,30 @@ namespace pneuma_test
                              ? pneuma::InputLayout::from_text("", overrides)
                              : pneuma::InputLayout::read(file, overrides);
     auto       simulator = std::make_unique<pneuma::Simulator>(comm, layout);
-    dealii::ParameterHandler prm;
-    simulator->declare_parameters(prm);
-    if (file.empty())
-      pneuma::parse_input_text(prm, "", overrides);
-    else
-      pneuma::parse_input(prm, file, overrides);
-    simulator->parse_parameters(prm);
-    simulator->setup();
+    // Input errors (in the parameters or found on the mesh) destroy the
+    // simulator here, not while the exception unwinds (its timers would
+    // print a warning into the test output).
+    std::exception_ptr error;
+    try
+      {
+        dealii::ParameterHandler prm;
+        simulator->declare_parameters(prm);
+        if (file.empty())
+          pneuma::parse_input_text(prm, "", overrides);
+        else
+          pneuma::parse_input(prm, file, overrides);
+        simulator->parse_parameters(prm);
+        simulator->setup();
+      }
+    catch (...)
+      {
+        error = std::current_exception();
+      }
+    if (error)
+      {
+        simulator.reset();
+        std::rethrow_exception(error);
+      }
     return simulator;
   }
 

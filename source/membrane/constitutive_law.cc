@@ -1,7 +1,12 @@
 #include <pneuma/core/input_error.h>
 #include <pneuma/core/input_layout.h>
 #include <pneuma/membrane/constitutive_law.h>
+#include <pneuma/membrane/prestress.h>
 #include <pneuma/membrane/tension_field.h>
+
+#include <deal.II/base/utilities.h>
+
+#include <cmath>
 
 namespace pneuma
 {
@@ -55,6 +60,23 @@ namespace pneuma
             "(energy W_relaxed + eps W), so that a slack patch keeps a "
             "regular tangent; 0 <= eps < 1e-2.",
             Patterns::Double(0.));
+          prm.add_parameter(
+            "Warp direction",
+            slot->warp_direction,
+            "A vector 'x, y, z' whose projection onto the surface is the "
+            "material frame's first axis (the warp of a fabric; the fill "
+            "is normal to it in the surface), e.g. '1, 0, 0' along a tube "
+            "on the x axis. Required by the orthotropic law and by an "
+            "unequal prestress; it must not be normal to the surface "
+            "anywhere in the region.",
+            Patterns::Anything());
+          prm.add_parameter(
+            "Prestress",
+            slot->prestress,
+            "Membrane forces of the reference state [N/m]: 'n' "
+            "(isotropic) or 'n1, n2' along the warp and the fill (needs a "
+            "Warp direction); added to the law's stress.",
+            Patterns::Anything());
           slot->laws = laws.declare_all(prm);
           prm.leave_subsection();
           slots.push_back(std::move(slot));
@@ -83,6 +105,66 @@ namespace pneuma
           m.law       = LawRegistry::instance().take(
             slot->laws, prm, slot->law, path + "/Law", path);
           prm.leave_subsection();
+
+          // The material frame.
+          if (!Utilities::trim(slot->warp_direction).empty())
+            {
+              const auto parts =
+                Utilities::split_string_list(slot->warp_direction, ',');
+              bool numbers = parts.size() == 3;
+              for (unsigned int d = 0; numbers && d < 3; ++d)
+                try
+                  {
+                    m.warp_direction[d] = Utilities::string_to_double(parts[d]);
+                  }
+                catch (...)
+                  {
+                    numbers = false;
+                  }
+              check_input(numbers && m.warp_direction.norm() > 0.,
+                          path + "/Warp direction",
+                          "must be a non-zero vector 'x, y, z', got '"
+                            + slot->warp_direction + "'");
+            }
+          check_input(m.law->isotropic() || m.warp_direction.norm() > 0.,
+                      path + "/Warp direction",
+                      "the law '" + slot->law
+                        + "' is anisotropic and needs the direction of its "
+                          "first material axis");
+
+          // Prestress: n or n1, n2 [N/m].
+          {
+            const auto parts =
+              Utilities::split_string_list(slot->prestress, ',');
+            std::vector<double> n;
+            try
+              {
+                for (const auto &part : parts)
+                  n.push_back(Utilities::string_to_double(part));
+              }
+            catch (...)
+              {
+                n.clear();
+              }
+            check_input((n.size() == 1 || n.size() == 2)
+                          && std::isfinite(n.front())
+                          && std::isfinite(n.back()),
+                        path + "/Prestress",
+                        "must be 'n' or 'n1, n2' in N/m, got '"
+                          + slot->prestress + "'");
+            check_input(n.front() == n.back() || m.warp_direction.norm() > 0.,
+                        path + "/Prestress",
+                        "unequal warp and fill prestress needs the region's "
+                        "Warp direction");
+            if (n.front() != 0. || n.back() != 0.)
+              {
+                SymmetricTensor<2, 2> S0;
+                S0[0][0] = n.front() / slot->thickness;
+                S0[1][1] = n.back() / slot->thickness;
+                m.law    = std::make_shared<PrestressedLaw>(m.law, S0);
+              }
+          }
+
           if (slot->wrinkling == "tension field")
             {
               check_input(slot->residual_stiffness < 1e-2,

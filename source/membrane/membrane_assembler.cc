@@ -112,7 +112,8 @@ namespace pneuma
           for (unsigned int q = 0; q < n_q; ++q)
             {
               const TangentFrame frame =
-                tangent_frame(sign * fe_values.normal_vector(q));
+                tangent_frame(sign * fe_values.normal_vector(q),
+                              material.warp_direction);
               Tensor<2, 3> Gu;
               for (unsigned int i = 0; i < n_dofs; ++i)
                 {

@@ -1,3 +1,4 @@
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/distributed/solution_transfer.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
@@ -278,6 +279,47 @@ namespace pneuma
           }
       throw_if_any(comm,
                    model.loads().non_finite_at_start(centres, line_centres));
+      // An anisotropic region needs its warp direction off the normal at
+      // every point (the frame's first axis is its projection, which turns
+      // abruptly near a point where the direction is normal): at least
+      // 0.1 of it projects onto the surface.
+      {
+        std::string     error;
+        const QGauss<2> quadrature(fe_degree + 1);
+        FEValues<2, 3>  fe_values(*mapping_cache,
+                                 dofs.get_fe(),
+                                 quadrature,
+                                 update_normal_vectors
+                                   | update_quadrature_points);
+        for (const auto &cell : dofs.active_cell_iterators())
+          if (cell->is_locally_owned() && error.empty())
+            {
+              const auto &material = materials[cell->material_id()];
+              if (material.law->isotropic())
+                continue;
+              fe_values.reinit(cell);
+              const Tensor<1, 3> &d = material.warp_direction;
+              for (unsigned int q = 0; q < quadrature.size(); ++q)
+                {
+                  const Tensor<1, 3> &N = fe_values.normal_vector(q);
+                  if ((d - (d * N) * N).norm() < 0.1 * d.norm())
+                    {
+                      std::ostringstream where;
+                      where << fe_values.quadrature_point(q);
+                      error = "Materials/Region "
+                              + std::to_string(cell->material_id())
+                              + "/Warp direction: it is within 6 degrees "
+                                "of the surface normal at ("
+                              + where.str()
+                              + "), where it gives no material frame; "
+                                "choose a direction that lies in the "
+                                "surface everywhere in the region";
+                      break;
+                    }
+                }
+            }
+        throw_if_any(comm, error);
+      }
       // Junction copies are tied vertex by vertex: both sides of a junction
       // would have to be refined alike.
       check_input(adaptive.cycles() == 0 || junction_ties.ties.empty(),

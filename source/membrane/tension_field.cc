@@ -75,7 +75,9 @@ namespace pneuma
       state.C_star             = C;
       const double s_min       = min_eigenvalue(S_star);
       state.plain_minor_stress = s_min;
-      if (s_min >= 0.)
+      // Taut down to round-off (the reference state's S(I) is zero to a
+      // few ulps of the modulus, of either sign).
+      if (s_min >= -1e-13 * law->initial_shear_modulus())
         return state;
 
       if (min_eigenvalue(C_free - C) >= 0.)

@@ -80,7 +80,8 @@ namespace pneuma
             for (unsigned int q = 0; q < quadrature.size(); ++q)
               {
                 const auto frame =
-                  membrane::tangent_frame(fe_values.normal_vector(q));
+                  membrane::tangent_frame(fe_values.normal_vector(q),
+                                          material.warp_direction);
                 const auto a = membrane::deformed_tangents(frame, grad_u[q]);
                 const auto C = membrane::right_cauchy_green(a);
                 SymmetricTensor<2, 2> S;
@@ -191,7 +192,8 @@ namespace pneuma
             for (unsigned int q = 0; q < quadrature.size(); ++q)
               {
                 const auto frame =
-                  membrane::tangent_frame(fe_values.normal_vector(q));
+                  membrane::tangent_frame(fe_values.normal_vector(q),
+                                          material.warp_direction);
                 const auto C = membrane::right_cauchy_green(
                   membrane::deformed_tangents(frame, grad_u[q]));
                 const auto state = material.tension_field->state(C);

@@ -21,6 +21,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
 
 #include <pneuma/core/registry.h>
@@ -69,6 +70,14 @@ namespace pneuma
       /// Initial (small-strain) in-plane shear modulus, for scaling.
       virtual double
       initial_shear_modulus() const = 0;
+
+      /// Whether the law is isotropic in the tangent plane (else it is
+      /// written in the region's material frame, e_1 along the warp).
+      virtual bool
+      isotropic() const
+      {
+        return true;
+      }
     };
 
     /// The registry of membrane laws.
@@ -86,6 +95,9 @@ namespace pneuma
       /// The law relaxed by tension field theory (the same object as law)
       /// where the region wrinkles, else null.
       std::shared_ptr<const TensionFieldLaw> tension_field;
+      /// The warp direction whose projection onto the tangent plane is the
+      /// frame's e_1 (zero: none, the frame follows the normal only).
+      dealii::Tensor<1, 3> warp_direction;
     };
 
     /**
@@ -125,6 +137,8 @@ namespace pneuma
         double                     thickness = 1e-3;
         double                     density   = 0.;
         std::string                wrinkling = "none";
+        std::string                warp_direction;
+        std::string                prestress          = "0";
         double                     residual_stiffness = 1e-6;
         std::map<std::string, std::unique_ptr<ConstitutiveLaw>> laws;
       };

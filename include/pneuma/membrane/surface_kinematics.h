@@ -11,8 +11,8 @@
  * tangent vectors are \f$a_\alpha = F e_\alpha = e_\alpha + (\nabla_S u)
  * e_\alpha\f$. The membrane metric is \f$C_{\alpha\beta} = a_\alpha\cdot
  * a_\beta\f$ and the current area element is \f$n\,da = a_1\times a_2\,dA\f$.
- * The laws are isotropic, so the choice of e_1 in the tangent plane does not
- * matter.
+ * For an isotropic law the choice of e_1 in the tangent plane does not
+ * matter; an anisotropic one takes e_1 along the region's warp direction.
  */
 
 #include <deal.II/base/symmetric_tensor.h>
@@ -49,6 +49,25 @@ namespace pneuma
       Tensor<1, 3> t;
       t[k]   = 1.;
       t      = t - (t * f.N) * f.N;
+      f.e[0] = t / t.norm();
+      f.e[1] = dealii::cross_product_3d(f.N, f.e[0]);
+      return f;
+    }
+
+    /**
+     * The material frame of an anisotropic region: e_1 along the
+     * projection of @p warp onto the tangent plane, e_2 = N x e_1. A zero
+     * @p warp, or one along the normal, gives tangent_frame(normal);
+     * anisotropic regions are checked at setup to have at least 0.1 of
+     * the warp in the surface everywhere.
+     */
+    inline TangentFrame
+    tangent_frame(const Tensor<1, 3> &normal, const Tensor<1, 3> &warp)
+    {
+      TangentFrame       f = tangent_frame(normal);
+      const Tensor<1, 3> t = warp - (warp * f.N) * f.N;
+      if (t.norm() <= 1e-3 * warp.norm() || warp.norm() == 0.)
+        return f;
       f.e[0] = t / t.norm();
       f.e[1] = dealii::cross_product_3d(f.N, f.e[0]);
       return f;

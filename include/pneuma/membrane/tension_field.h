@@ -109,6 +109,12 @@ namespace pneuma
         return law->initial_shear_modulus();
       }
 
+      bool
+      isotropic() const override
+      {
+        return law->isotropic();
+      }
+
       /// The state at C (taut, wrinkled or slack) with C*.
       WrinklingState
       state(const SymmetricTensor<2, 2> &C) const;
