@@ -74,6 +74,12 @@ check "$dir/valid.prm"              1 "Materials/Region 7: no cell of the mesh h
 check "$dir/valid.prm"              1 "Materials/Region 1: the mesh has cells with material id 1 but the input has no such subsection" --set "Geometry/Type=closed cylinder"
 check "$dir/valid.prm"              1 "Materials/Heating: unknown subsection" --set "Materials/Heating/Power=1"
 check "$dir/valid.prm"              1 "Materials/Region 0/Saint Venant-Kirchhoff/Poisson's ratio: must lie in (-1, 0.5)" --set "Materials/Region 0/Saint Venant-Kirchhoff/Poisson's ratio=-1"
+check "$dir/valid.prm"              1 "Materials/Region 0/Wrinkling residual stiffness: must be below 1e-2" --set "Materials/Region 0/Wrinkling=tension field" --set "Materials/Region 0/Wrinkling residual stiffness=0.5"
+check "$dir/valid.prm"              1 "Materials/Region 0/Warp direction: must be a non-zero vector" --set "Materials/Region 0/Warp direction=1, x, 0"
+check "$dir/valid.prm"              1 "Materials/Region 0/Warp direction: the law 'orthotropic' is anisotropic" --set "Materials/Region 0/Law=orthotropic"
+check "$dir/valid.prm"              1 "Materials/Region 0/Warp direction: it is within 6 degrees of the surface normal" --set "Materials/Region 0/Law=orthotropic" --set "Materials/Region 0/Warp direction=0, 0, 1"
+check "$dir/valid.prm"              1 "Materials/Region 0/Prestress: must be 'n' or 'n1, n2'" --set "Materials/Region 0/Prestress=1, 2, 3"
+check "$dir/valid.prm"              1 "Materials/Region 0/orthotropic/Poisson's ratio: nu12^2 must be below E1/E2" --set "Materials/Region 0/Law=orthotropic" --set "Materials/Region 0/Warp direction=1, 0, 0" --set "Materials/Region 0/orthotropic/Fill modulus=1e11"
 check "$dir/valid.prm"              1 "unknown option" --bogus
 check "$dir/valid.prm"              0 "finished"
 k="$dir/cable_valid.prm"
