@@ -64,13 +64,17 @@ namespace pneuma
 
     WrinklingState
     TensionFieldLaw::solve(const SymmetricTensor<2, 2> &C,
+                           SymmetricTensor<2, 2>       &S_plain,
+                           SymmetricTensor<4, 2>       &D_plain,
                            SymmetricTensor<2, 2>       &S_star,
                            SymmetricTensor<4, 2>       &D_star,
                            double                      &beta,
                            Tensor<1, 2>                &m) const
     {
       WrinklingState state;
-      law->evaluate(C, S_star, D_star);
+      law->evaluate(C, S_plain, D_plain);
+      S_star                   = S_plain;
+      D_star                   = D_plain;
       beta                     = 0.;
       state.C_star             = C;
       const double s_min       = min_eigenvalue(S_star);
@@ -165,11 +169,11 @@ namespace pneuma
     WrinklingState
     TensionFieldLaw::state(const SymmetricTensor<2, 2> &C) const
     {
-      SymmetricTensor<2, 2> S;
-      SymmetricTensor<4, 2> D;
+      SymmetricTensor<2, 2> S0, S;
+      SymmetricTensor<4, 2> D0, D;
       double                beta;
       Tensor<1, 2>          m;
-      return solve(C, S, D, beta, m);
+      return solve(C, S0, D0, S, D, beta, m);
     }
 
     void
@@ -177,15 +181,18 @@ namespace pneuma
                               SymmetricTensor<2, 2>       &S,
                               SymmetricTensor<4, 2>       &D) const
     {
-      double               beta;
-      Tensor<1, 2>         m;
-      const WrinklingState state = solve(C, S, D, beta, m);
+      SymmetricTensor<2, 2> S0;
+      SymmetricTensor<4, 2> D0;
+      double                beta;
+      Tensor<1, 2>          m;
+      const WrinklingState  state = solve(C, S0, D0, S, D, beta, m);
+      // beta > 0 at every wrinkled state that solve() accepts (beta = 0
+      // only where it failed and S is not finite).
       if (state.kind == WrinklingState::wrinkled && beta > 0.)
         {
           // dS_r/dE = D* - [a_M/2, beta a_P] J^-1 [a_M; a_P], with
           // a_M = D*:M, a_P = D*:P, at r = 0 (doc/theory.md): symmetric.
-          const Tensor<1, 2> p =
-            unit(std::atan2(m[1], m[0]) + 0.5 * numbers::PI);
+          const Tensor<1, 2>         &p  = state.tension_direction;
           const SymmetricTensor<2, 2> M  = sym_dyad(m, m);
           const SymmetricTensor<2, 2> P  = sym_dyad(m, p);
           const SymmetricTensor<2, 2> aM = D * M, aP = D * P;
@@ -199,26 +206,9 @@ namespace pneuma
           D -= 0.25 * (outer_product(aM, b0) + outer_product(b0, aM))
                + 0.5 * beta * (outer_product(aP, b1) + outer_product(b1, aP));
         }
-      else if (state.kind == WrinklingState::wrinkled)
-        {
-          // On the taut boundary (beta = 0): the limit D - a_M a_M/(M:D:M).
-          const SymmetricTensor<2, 2> M  = sym_dyad(m, m);
-          const SymmetricTensor<2, 2> aM = D * M;
-          D -= outer_product(aM, aM) / (M * aM);
-        }
-      if (residual_stiffness > 0. && state.kind != WrinklingState::taut)
-        {
-          SymmetricTensor<2, 2> S0;
-          SymmetricTensor<4, 2> D0;
-          law->evaluate(C, S0, D0);
-          S += residual_stiffness * S0;
-          D += residual_stiffness * D0;
-        }
-      else if (residual_stiffness > 0.)
-        {
-          S *= 1. + residual_stiffness;
-          D *= 1. + residual_stiffness;
-        }
+      // The residual fraction of the plain law, evaluated once in solve().
+      S += residual_stiffness * S0;
+      D += residual_stiffness * D0;
     }
 
     double

@@ -127,10 +127,13 @@ namespace pneuma
       }
 
     private:
-      /// The state at C; where wrinkled also the Newton unknowns' tangent
-      /// terms (stress and tangent at C*, beta and the direction m).
+      /// The state at C with the plain law's stress and tangent at C, and
+      /// the relaxed ones: stress and tangent at C*, beta and the direction
+      /// m (where wrinkled).
       WrinklingState
       solve(const SymmetricTensor<2, 2> &C,
+            SymmetricTensor<2, 2>       &S_plain,
+            SymmetricTensor<4, 2>       &D_plain,
             SymmetricTensor<2, 2>       &S_star,
             SymmetricTensor<4, 2>       &D_star,
             double                      &beta,
