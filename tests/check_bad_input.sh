@@ -80,6 +80,12 @@ check "$dir/valid.prm"              1 "Materials/Region 0/Warp direction: the la
 check "$dir/valid.prm"              1 "Materials/Region 0/Warp direction: it is within 6 degrees of the surface normal" --set "Materials/Region 0/Law=orthotropic" --set "Materials/Region 0/Warp direction=0, 0, 1"
 check "$dir/valid.prm"              1 "Materials/Region 0/Prestress: must be 'n' or 'n1, n2'" --set "Materials/Region 0/Prestress=1, 2, 3"
 check "$dir/valid.prm"              1 "Materials/Region 0/orthotropic/Poisson's ratio: nu12^2 must be below E1/E2" --set "Materials/Region 0/Law=orthotropic" --set "Materials/Region 0/Warp direction=1, 0, 0" --set "Materials/Region 0/orthotropic/Fill modulus=1e11"
+# Form finding: a degree-1 mesh, no prestress, lambda out of range, and an
+# iteration that runs out of updates (exit 2, the last shape written).
+check "$dir/valid.prm"              1 "Discretisation/Polynomial degree: form finding needs degree 2" --set "Form finding/Enabled=true"
+check_mpi "$dir/valid.prm"          1 "Materials/Region 0/Prestress: form finding needs a positive prestress" --set "Form finding/Enabled=true" --set "Discretisation/Polynomial degree=2"
+check "$dir/valid.prm"              1 "Form finding/Homotopy factor: must be in [0, 1)" --set "Form finding/Homotopy factor=1"
+check "$dir/valid.prm"              2 "the form finding did not converge in 2 updates" --set "Geometry/Type=open cylinder" --set "Boundary conditions/Fixed boundaries=0: xyz; 1: xyz" --set "Form finding/Enabled=true" --set "Discretisation/Polynomial degree=2" --set "Materials/Region 0/Prestress=100" --set "Form finding/Maximum updates=2"
 check "$dir/valid.prm"              1 "unknown option" --bogus
 check "$dir/valid.prm"              0 "finished"
 k="$dir/cable_valid.prm"

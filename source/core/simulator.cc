@@ -7,6 +7,7 @@
 #include <pneuma/core/output.h>
 #include <pneuma/core/simulator.h>
 #include <pneuma/solvers/eigen_analysis.h>
+#include <pneuma/solvers/form_finding.h>
 #include <pneuma/solvers/load_path.h>
 #include <pneuma/solvers/stability.h>
 
@@ -63,6 +64,9 @@ namespace pneuma
     std::unique_ptr<solvers::StabilityCheck> stability;
     solvers::StabilityReport                 last_stability;
     bool                                     branch_switching = false;
+    /// Form finding before the analysis (solvers/form_finding.h).
+    solvers::FormFinding       form_finding;
+    solvers::FormFindingResult form_found;
     /// The eigen analysis of the final state (solvers/eigen_analysis.h).
     solvers::EigenParameters eigen;
     solvers::EigenResult     eigen_result;
@@ -105,6 +109,7 @@ namespace pneuma
     impl->output.declare_parameters(prm);
     impl->checkpoints.declare_parameters(prm);
     impl->eigen.declare_parameters(prm);
+    impl->form_finding.declare_parameters(prm);
     prm.enter_subsection("Stability");
     prm.add_parameter(
       "Check inertia",
@@ -144,6 +149,7 @@ namespace pneuma
     impl->output.parse_parameters(prm);
     impl->checkpoints.parse_parameters(prm);
     impl->eigen.parse_parameters(prm);
+    impl->form_finding.parse_parameters(prm);
     // An adaptive study restarts from its beginning: each cycle is a new
     // run on a mesh refined from the last one's result.
     check_input(!impl->checkpoints.enabled()
@@ -207,6 +213,7 @@ namespace pneuma
     // The output directory must be writable before any work.
     impl->output.check_directory(impl->comm);
     impl->model.setup();
+    impl->form_finding.check(impl->model);
     solvers::EigenAnalysis::check_size(impl->model, impl->eigen);
   }
 
@@ -425,6 +432,13 @@ namespace pneuma
   {
     RunResult result;
     model.check_well_posed();
+    // The shape the analysis starts from (again after a restart: the
+    // iteration is deterministic).
+    if (form_finding.enabled())
+      {
+        TimerOutput::Scope ts(timer, "form finding");
+        form_found = form_finding.run(model, path.newton(), pcout);
+      }
     // A restart continues the checkpoint's state and output files.
     std::unique_ptr<std::pair<solvers::PathState, solvers::BorderedVector>>
                  resume;
@@ -524,8 +538,17 @@ namespace pneuma
     solvers::PathResult path_result;
     try
       {
-        path_result =
-          path.run(model, pcout, wall_clock, observer, resume.get());
+        if (form_finding.enabled() && !form_found.converged)
+          {
+            // The last shape is the run's state.
+            path_result.state     = model.initial_state();
+            path_result.exit_code = solver_failed;
+            path_result.message   = form_found.message;
+            observer(solvers::PathStep{}, path_result.state);
+          }
+        else
+          path_result =
+            path.run(model, pcout, wall_clock, observer, resume.get());
         // A run stopped by a signal leaves a checkpoint to continue from
         // (not an adaptive study: its cycles start again).
         if ((path_result.exit_code == 128 + SIGINT
@@ -641,6 +664,15 @@ namespace pneuma
       }
     row.add(
       run, "final_time", "", path_result.final_time, counts | Statistics::test);
+    if (form_finding.enabled())
+      {
+        row.add_count(run,
+                      "form_finding_newton_iterations",
+                      form_found.newton_iterations,
+                      counts);
+        row.add(
+          run, "form_finding_last_move", "", form_found.last_change, counts);
+      }
     model.add_statistics(row, path_result.state);
     // Critical points: located by the stability check, or limit points
     // where a followed path turned back.

@@ -156,6 +156,7 @@ namespace pneuma
                         path + "/Prestress",
                         "unequal warp and fill prestress needs the region's "
                         "Warp direction");
+            m.prestress = {{n.front(), n.back()}};
             if (n.front() != 0. || n.back() != 0.)
               {
                 SymmetricTensor<2, 2> S0;

@@ -84,12 +84,14 @@ namespace pneuma
       for (unsigned int i = 0; i < n_dofs; ++i)
         component[i] = fe.system_to_component_index(i).first;
 
+      // Form finding: the form-finding laws, and no load.
+      const bool loaded      = form_finding_laws.empty();
       const bool want_matrix = request.tangent != nullptr;
       const bool want_vector =
         request.residual != nullptr || request.external != nullptr;
       const double       t = request.time;
       const Tensor<1, 3> g =
-        loads.has_gravity() ? loads.gravity(t) : Tensor<1, 3>();
+        loaded && loads.has_gravity() ? loads.gravity(t) : Tensor<1, 3>();
 
 
       for (const auto &cell : dof_handler->active_cell_iterators())
@@ -104,10 +106,13 @@ namespace pneuma
           cell_residual = 0;
           cell_external = 0;
 
-          const RegionMaterial &material = materials[cell->material_id()];
-          const double          H        = material.thickness;
-          const double          sign = cell_orientation(geometry, fe_values);
-          const bool pressurised = loads.pressure_acts_on(cell->material_id());
+          const RegionMaterial &material =
+            loaded ? materials[cell->material_id()]
+                   : form_finding_laws.at(cell->material_id());
+          const double H    = material.thickness;
+          const double sign = cell_orientation(geometry, fe_values);
+          const bool   pressurised =
+            loaded && loads.pressure_acts_on(cell->material_id());
 
           for (unsigned int q = 0; q < n_q; ++q)
             {
@@ -136,7 +141,7 @@ namespace pneuma
               const double       p = pressurised ? loads.pressure(X, t) : 0.;
               const Tensor<1, 3> area_vector = cross_product_3d(a[0], a[1]);
               Tensor<1, 3>       dead_load   = material.density * H * g;
-              if (loads.has_surface_load())
+              if (loaded && loads.has_surface_load())
                 dead_load += loads.surface_load(X, t);
 
               for (unsigned int i = 0; i < n_dofs; ++i)
@@ -192,7 +197,7 @@ namespace pneuma
             }
 
           // Dead line loads on listed boundaries.
-          if (want_vector && !loads.line_load_boundaries().empty())
+          if (loaded && want_vector && !loads.line_load_boundaries().empty())
             for (const auto f : cell->face_indices())
               if (cell->face(f)->at_boundary()
                   && loads.line_load_boundaries().count(
@@ -352,6 +357,35 @@ namespace pneuma
               }
           }
       return Utilities::MPI::sum(volume, dof_handler->get_communicator()) / 3.;
+    }
+
+    double
+    MembraneAssembler::surface_area(const LA::Vector &u) const
+    {
+      const auto                      &fe = dof_handler->get_fe();
+      const QGauss<2>                  quadrature(degree + 1);
+      FEValues<2, 3>                   fe_values(*mapping,
+                               fe,
+                               quadrature,
+                               update_gradients | update_normal_vectors
+                                 | update_JxW_values);
+      const FEValuesExtractors::Vector displacement(0);
+      std::vector<Tensor<2, 3>>        grad_u(quadrature.size());
+      double                           area = 0.;
+      for (const auto &cell : dof_handler->active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fe_values.reinit(cell);
+            fe_values[displacement].get_function_gradients(u, grad_u);
+            for (unsigned int q = 0; q < quadrature.size(); ++q)
+              {
+                const auto a =
+                  deformed_tangents(tangent_frame(fe_values.normal_vector(q)),
+                                    grad_u[q]);
+                area += cross_product_3d(a[0], a[1]).norm() * fe_values.JxW(q);
+              }
+          }
+      return Utilities::MPI::sum(area, dof_handler->get_communicator());
     }
   } // namespace membrane
 } // namespace pneuma

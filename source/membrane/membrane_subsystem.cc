@@ -11,6 +11,7 @@
 #include <pneuma/core/input_layout.h>
 #include <pneuma/core/model.h>
 #include <pneuma/core/share_constraints.h>
+#include <pneuma/membrane/form_finding_law.h>
 #include <pneuma/membrane/membrane_subsystem.h>
 #include <pneuma/postprocess/membrane_fields.h>
 
@@ -253,7 +254,84 @@ namespace pneuma
         rigid_regions.plate_master_dofs(),
         junction_ties.copies(),
         c);
+      if (form_finding)
+        add_normal_motion_constraints(c);
       share_constraint_lines(c, shared_masters(), model.locally_owned(), comm);
+    }
+
+    void
+    MembraneSubsystem::compute_motion_directions()
+    {
+      // The consistent nodal normal int N_i n dA of every node of the
+      // owned cells (their patches are owned or ghost cells), each cell's
+      // part turned to agree with what the node has so far.
+      const auto     &fe = dofs.get_fe();
+      const QGauss<2> quadrature(fe_degree + 1);
+      FEValues<2, 3>  fe_values(*mapping_cache,
+                               fe,
+                               quadrature,
+                               update_values | update_normal_vectors
+                                 | update_JxW_values);
+      auto           &normal = motion_direction;
+      normal.clear();
+      std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+      const unsigned int n_nodes = fe.base_element(0).n_dofs_per_cell();
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned() || cell->is_ghost())
+          {
+            fe_values.reinit(cell);
+            cell->get_dof_indices(dof_indices);
+            for (unsigned int k = 0; k < n_nodes; ++k)
+              {
+                const unsigned int i = fe.component_to_system_index(0, k);
+                Tensor<1, 3>       part;
+                for (unsigned int q = 0; q < quadrature.size(); ++q)
+                  part += fe_values.shape_value(i, q)
+                          * fe_values.normal_vector(q) * fe_values.JxW(q);
+                auto &n = normal[dof_indices[i]];
+                n += (n * part < 0. ? -1. : 1.) * part;
+              }
+          }
+    }
+
+    void
+    MembraneSubsystem::add_normal_motion_constraints(
+      AffineConstraints<double> &c) const
+    {
+      const auto        &fe      = dofs.get_fe();
+      const unsigned int n_nodes = fe.base_element(0).n_dofs_per_cell();
+      std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+      // Motion along the normal only: among the node's free components,
+      // u_b = (n_b / n_a) u_a with a the one the normal is most along.
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_indices(dof_indices);
+            for (unsigned int q = 0; q < n_nodes; ++q)
+              {
+                std::array<types::global_dof_index, 3> d;
+                for (unsigned int k = 0; k < 3; ++k)
+                  d[k] = dof_indices[fe.component_to_system_index(k, q)];
+                const Tensor<1, 3>       &m = motion_direction.at(d[0]);
+                const Tensor<1, 3>        n = m / m.norm();
+                std::vector<unsigned int> free;
+                for (unsigned int k = 0; k < 3; ++k)
+                  if (!c.is_constrained(d[k]))
+                    free.push_back(k);
+                if (free.size() < 2)
+                  continue;
+                unsigned int a = free[0];
+                for (const auto k : free)
+                  if (std::abs(n[k]) > std::abs(n[a]))
+                    a = k;
+                for (const auto b : free)
+                  if (b != a)
+                    {
+                      c.add_line(d[b]);
+                      c.add_entry(d[b], d[a], n[b] / n[a]);
+                    }
+              }
+          }
     }
 
     void
@@ -263,6 +341,7 @@ namespace pneuma
         std::make_unique<MembraneAssembler>(scene, materials, model.loads());
       assembler->reinit(*mapping_cache, dofs, fe_degree);
       boundary_conditions.check_against_mesh(dofs);
+      prestress_force = prestress_force_scale();
       // The loads at the start: finite at every cell centre (and line-load
       // edge) of the reference surface, on every rank alike.
       std::vector<Point<3>> centres, line_centres;
@@ -541,7 +620,145 @@ namespace pneuma
     MembraneSubsystem::set_prescribed_values(const double t,
                                              LA::Vector  &field) const
     {
-      boundary_conditions.set_prescribed_values(*mapping_cache, dofs, t, field);
+      // Form finding keeps the supports where the input puts them.
+      if (!form_finding)
+        boundary_conditions.set_prescribed_values(*mapping_cache,
+                                                  dofs,
+                                                  t,
+                                                  field);
+    }
+
+    // ------------------------------------------------------------------
+    // Form finding
+    // ------------------------------------------------------------------
+    void
+    MembraneSubsystem::begin_form_finding(const double lambda)
+    {
+      check_input(rigid_regions.empty(),
+                  "Boundary conditions/Rigid regions",
+                  "form finding moves the reference surface, which rigid "
+                  "plates cannot follow; hold those regions with Fixed "
+                  "regions instead");
+      check_input(fe_degree >= 2,
+                  "Discretisation/Polynomial degree",
+                  "form finding needs degree 2: on the facets of degree 1 "
+                  "the iteration is unstable (a catenoid collapses)");
+      check_input(adaptive.cycles() == 0,
+                  "Adaptive refinement/Cycles",
+                  "form finding and adaptive refinement cannot be combined "
+                  "(new cells would lie on the input's surface)");
+      std::map<types::material_id, RegionMaterial> laws;
+      double                                       n_max = 0.;
+      for (const auto id : mesh_ids)
+        {
+          const RegionMaterial &m    = materials[id];
+          const std::string     path = "Materials/Region " + std::to_string(id);
+          const double          n1 = m.prestress[0], n2 = m.prestress[1];
+          check_input(n1 > 0. && n2 > 0.,
+                      path + "/Prestress",
+                      "form finding needs a positive prestress in every "
+                      "region (the membrane forces of the shape to find)");
+          check_input(lambda == 0. || n1 == n2,
+                      "Form finding/Homotopy factor",
+                      "must be 0 where the prestress is anisotropic (" + path
+                        + "/Prestress)");
+          RegionMaterial f = m;
+          f.law = std::make_shared<FormFindingLaw>(n1, n2, lambda, m.thickness);
+          f.tension_field.reset();
+          laws[id] = f;
+          n_max    = std::max(n_max, std::max(n1, n2));
+        }
+      assembler->set_form_finding(laws);
+      form_finding = true;
+      // Nodes move along the normals of the input surface.
+      compute_motion_directions();
+
+      (void)n_max;
+      if (reference_shift.size() == 0)
+        {
+          reference_shift.reinit(owned_dofs, relevant_dofs, comm);
+          reference_shift = 0.;
+        }
+    }
+
+    double
+    MembraneSubsystem::move_reference(const LA::Vector &field)
+    {
+      // The membrane's part of the model's ghosted field.
+      LA::Vector owned(owned_dofs, comm);
+      for (const auto i : owned_dofs)
+        owned[i] = field[i];
+      owned.compress(VectorOperation::insert);
+      const double change = owned.linfty_norm();
+      LA::Vector   shift(owned_dofs, comm);
+      shift = reference_shift;
+      shift += owned;
+      reference_shift = shift;
+      // (MappingQCache imports the ghost values itself.)
+      auto moved = std::make_unique<MappingQCache<2, 3>>(fe_degree);
+      moved->initialize(*mapping_cache, dofs, owned, true);
+      mapping_cache = std::move(moved);
+      assembler->reinit(*mapping_cache, dofs, fe_degree);
+      ++form_finding_updates;
+      return change;
+    }
+
+    void
+    MembraneSubsystem::end_form_finding()
+    {
+      assembler->set_form_finding({});
+      form_finding = false;
+    }
+
+    double
+    MembraneSubsystem::prestress_force_scale() const
+    {
+      // The largest prestress times the square root of the area.
+      double          area = 0., n_max = 0.;
+      const QGauss<2> quadrature(fe_degree + 1);
+      FEValues<2, 3>  fe_values(*mapping_cache,
+                               dofs.get_fe(),
+                               quadrature,
+                               update_JxW_values);
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const auto &n = materials[cell->material_id()].prestress;
+            n_max         = std::max({n_max, std::abs(n[0]), std::abs(n[1])});
+            fe_values.reinit(cell);
+            for (unsigned int q = 0; q < quadrature.size(); ++q)
+              area += fe_values.JxW(q);
+          }
+      return Utilities::MPI::max(n_max, comm)
+             * std::sqrt(Utilities::MPI::sum(area, comm));
+    }
+
+    double
+    MembraneSubsystem::reference_diameter() const
+    {
+      std::array<double, 3> lo, hi;
+      lo.fill(std::numeric_limits<double>::max());
+      hi.fill(-std::numeric_limits<double>::max());
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto &x : mapping_cache->get_vertices(cell))
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                lo[d] = std::min(lo[d], x[d]);
+                hi[d] = std::max(hi[d], x[d]);
+              }
+      double sum = 0.;
+      for (unsigned int d = 0; d < 3; ++d)
+        sum += std::pow(Utilities::MPI::max(hi[d], comm)
+                          + Utilities::MPI::max(-lo[d], comm),
+                        2);
+      return std::sqrt(sum);
+    }
+
+    double
+    MembraneSubsystem::force_scale(const LA::Vector &) const
+    {
+      return prestress_force;
     }
 
     void
@@ -628,6 +845,9 @@ namespace pneuma
                       {
                         dof[c]      = cell->vertex_dof_index(v, c);
                         position[c] = cell->vertex(v)[c];
+                        // The surface form finding found.
+                        if (reference_shift.size() > 0)
+                          position[c] += reference_shift[dof[c]];
                       }
                     found = true;
                     break;
@@ -703,6 +923,18 @@ namespace pneuma
             run, "reaction", "N", reaction, Statistics::summary);
           statistics.add_vector(
             run, "applied_load", "N", applied, Statistics::summary);
+          if (form_finding_updates > 0)
+            {
+              statistics.add_count(run,
+                                   "form_finding_updates",
+                                   form_finding_updates,
+                                   Statistics::summary);
+              statistics.add(run,
+                             "surface_area",
+                             "m^2",
+                             assembler->surface_area(field),
+                             Statistics::summary);
+            }
         }
       if (materials.any_wrinkling())
         {

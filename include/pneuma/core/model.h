@@ -70,6 +70,14 @@ namespace pneuma
     /// Rebuild the sparsity pattern and matrices (couplings have grown).
     void
     rebuild_matrices();
+    /// Ask every subsystem for its constraints again (they depend on a
+    /// state, e.g. form finding's normal motion) and rebuild the matrices.
+    void
+    reconstrain()
+    {
+      make_constraints();
+      rebuild_matrices();
+    }
 
     // ---- access
     MPI_Comm

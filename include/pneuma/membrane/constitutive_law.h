@@ -26,6 +26,7 @@
 
 #include <pneuma/core/registry.h>
 
+#include <array>
 #include <map>
 #include <memory>
 #include <string>
@@ -98,6 +99,9 @@ namespace pneuma
       /// The warp direction whose projection onto the tangent plane is the
       /// frame's e_1 (zero: none, the frame follows the normal only).
       dealii::Tensor<1, 3> warp_direction;
+      /// The prestress n_1, n_2 [N/m] along warp and fill (also the target
+      /// of form finding).
+      std::array<double, 2> prestress{{0., 0.}};
     };
 
     /**

@@ -28,6 +28,7 @@
 #include <pneuma/membrane/constitutive_law.h>
 
 #include <functional>
+#include <map>
 #include <vector>
 
 namespace pneuma
@@ -106,13 +107,28 @@ namespace pneuma
       double
       enclosed_volume(const LA::Vector &u) const;
 
+      /// Area of the deformed surface at @p u (ghosted), over the ranks.
+      double
+      surface_area(const LA::Vector &u) const;
+
+      /**
+       * Form finding (solvers/form_finding.h): the laws of @p laws replace
+       * the regions' and no load acts; an empty map restores the analysis.
+       */
+      void
+      set_form_finding(std::map<types::material_id, RegionMaterial> laws)
+      {
+        form_finding_laws = std::move(laws);
+      }
+
     private:
-      const geometry::SceneGenerator &geometry;
-      const MaterialRegions          &materials;
-      const loads::Loads             &loads;
-      const Mapping<2, 3>            *mapping     = nullptr;
-      const DoFHandler<2, 3>         *dof_handler = nullptr;
-      unsigned int                    degree      = 1;
+      const geometry::SceneGenerator              &geometry;
+      const MaterialRegions                       &materials;
+      const loads::Loads                          &loads;
+      const Mapping<2, 3>                         *mapping     = nullptr;
+      const DoFHandler<2, 3>                      *dof_handler = nullptr;
+      unsigned int                                 degree      = 1;
+      std::map<types::material_id, RegionMaterial> form_finding_laws;
     };
   } // namespace membrane
 } // namespace pneuma

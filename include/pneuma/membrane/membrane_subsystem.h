@@ -215,6 +215,33 @@ namespace pneuma
       {
         return *output;
       }
+      // ---- form finding (solvers/form_finding.h)
+      /**
+       * Replace every region's law by the updated-reference law of its
+       * prestress (membrane/form_finding_law.h) with homotopy factor
+       * @p lambda; loads and prescribed values are off until
+       * end_form_finding(). InputError naming the entry if a region has no
+       * positive prestress, an anisotropic one with lambda > 0, or the
+       * scene rigid regions or adaptive refinement.
+       */
+      void
+      begin_form_finding(const double lambda);
+      /// Move the reference surface by the membrane part of the ghosted
+      /// @p field (X <- X + u) and return max |u| over the ranks.
+      double
+      move_reference(const LA::Vector &field);
+      /// The regions' own laws again; analysis starts from the found shape.
+      void
+      end_form_finding();
+      /// Diameter of the bounding box of the reference surface.
+      double
+      reference_diameter() const;
+      /// The scale of the prestress forces (a prestress-driven step has
+      /// no load): the largest prestress times the square root of the
+      /// area.
+      double
+      force_scale(const LA::Vector &field) const override;
+
       unsigned int
       refinement_cycles() const override
       {
@@ -232,6 +259,18 @@ namespace pneuma
       Point<3>
       support_centroid(
         std::map<types::global_dof_index, Point<3>> &support) const;
+      double
+      prestress_force_scale() const;
+      /// Form finding: the consistent normal int N_i n dA of every node of
+      /// the owned cells on the input surface (motion_direction).
+      void
+      compute_motion_directions();
+      /// Form finding: every free node moves along its motion direction
+      /// only (the tangential position of the nodes is the mesh's, not a
+      /// physical unknown of an isotropic prestress; left free, a Q1 mesh
+      /// twists into configurations of smaller discrete area).
+      void
+      add_normal_motion_constraints(AffineConstraints<double> &c) const;
       /// Masters that dependent dofs refer to (share_constraints.h).
       IndexSet
       shared_masters() const;
@@ -280,6 +319,13 @@ namespace pneuma
       /// it (contact): free rigid motions are then only a warning.
       bool   coupled_to_others = false;
       double reference_volume  = 0.;
+      /// Form finding: on, its force scale, the displacement of the
+      /// reference from the input's surface (ghosted) and its updates.
+      bool                                            form_finding    = false;
+      double                                          prestress_force = 0.;
+      LA::Vector                                      reference_shift;
+      std::map<types::global_dof_index, Tensor<1, 3>> motion_direction;
+      unsigned int                                    form_finding_updates = 0;
 
       // Monitor points: (owning rank's) dof indices of the nearest vertex.
       std::vector<std::array<types::global_dof_index, 3>> monitor_dofs;
