@@ -904,6 +904,64 @@ namespace pneuma
           reaction[c] = Utilities::MPI::sum(reaction[c], comm);
           applied[c]  = Utilities::MPI::sum(applied[c], comm);
         }
+
+      // Per supported boundary: the force and its moment about the origin
+      // at the current positions, from the prescribed dofs on it (a node
+      // on two boundaries counts in both).
+      boundary_reactions.clear();
+      const auto &ids = boundary_conditions.supported_boundaries();
+      if (ids.empty())
+        return;
+      const auto                                 &fe = dofs.get_fe();
+      std::map<types::global_dof_index, Point<3>> support;
+      DoFTools::map_dofs_to_support_points(*mapping_cache, dofs, support);
+      std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+      for (const auto id : ids)
+        {
+          std::set<types::global_dof_index> seen;
+          Tensor<1, 3>                      force, moment;
+          for (const auto &cell : dofs.active_cell_iterators())
+            if (cell->is_locally_owned())
+              for (const auto f : cell->face_indices())
+                if (cell->face(f)->at_boundary()
+                    && cell->face(f)->boundary_id() == id)
+                  {
+                    cell->face(f)->get_dof_indices(face_dofs);
+                    // The face's nodes: their three dofs, by base index.
+                    std::map<unsigned int,
+                             std::array<types::global_dof_index, 3>>
+                      nodes;
+                    for (unsigned int k = 0; k < face_dofs.size(); ++k)
+                      {
+                        const auto ci = fe.face_system_to_component_index(k);
+                        nodes[ci.second][ci.first] = face_dofs[k];
+                      }
+                    for (const auto &[base, d] : nodes)
+                      {
+                        if (!owned_dofs.is_element(d[0])
+                            || !seen.insert(d[0]).second)
+                          continue;
+                        Tensor<1, 3> x, r;
+                        for (unsigned int c = 0; c < 3; ++c)
+                          {
+                            x[c] = support.at(d[c])[c] + u[d[c]];
+                            if (constraints.is_constrained(d[c])
+                                && constraints.get_constraint_entries(d[c])
+                                     ->empty())
+                              r[c] = residual[d[c]];
+                          }
+                        force += r;
+                        moment += cross_product_3d(x, r);
+                      }
+                  }
+          std::array<double, 6> fm;
+          for (unsigned int c = 0; c < 3; ++c)
+            {
+              fm[c]     = Utilities::MPI::sum(force[c], comm);
+              fm[3 + c] = Utilities::MPI::sum(moment[c], comm);
+            }
+          boundary_reactions[id] = fm;
+        }
     }
 
     void
@@ -923,6 +981,20 @@ namespace pneuma
             run, "reaction", "N", reaction, Statistics::summary);
           statistics.add_vector(
             run, "applied_load", "N", applied, Statistics::summary);
+          for (const auto &[id, fm] : boundary_reactions)
+            {
+              const std::string b = "boundary_" + std::to_string(id);
+              statistics.add_vector(run,
+                                    b + "_reaction",
+                                    "N",
+                                    {{fm[0], fm[1], fm[2]}},
+                                    Statistics::summary);
+              statistics.add_vector(run,
+                                    b + "_reaction_moment",
+                                    "N m",
+                                    {{fm[3], fm[4], fm[5]}},
+                                    Statistics::summary);
+            }
           if (form_finding_updates > 0)
             {
               statistics.add_count(run,

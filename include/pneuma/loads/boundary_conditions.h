@@ -77,6 +77,16 @@ namespace pneuma
         return ids;
       }
 
+      /// Boundary ids with a fixed or prescribed component.
+      std::set<types::boundary_id>
+      supported_boundaries() const
+      {
+        auto ids = displaced_boundaries;
+        for (const auto &[id, mask] : fixed_boundaries)
+          ids.insert(id);
+        return ids;
+      }
+
     private:
       /// Map of (prescribed dof, value at t) on the locally relevant dofs.
       std::map<types::global_dof_index, double>

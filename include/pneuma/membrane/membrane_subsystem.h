@@ -325,7 +325,11 @@ namespace pneuma
       double                                          prestress_force = 0.;
       LA::Vector                                      reference_shift;
       std::map<types::global_dof_index, Tensor<1, 3>> motion_direction;
-      unsigned int                                    form_finding_updates = 0;
+      /// Force and moment about the origin of each supported boundary at
+      /// the last compute_reactions().
+      mutable std::map<types::boundary_id, std::array<double, 6>>
+                   boundary_reactions;
+      unsigned int form_finding_updates = 0;
 
       // Monitor points: (owning rank's) dof indices of the nearest vertex.
       std::vector<std::array<types::global_dof_index, 3>> monitor_dofs;
