@@ -4,6 +4,7 @@
 #include <pneuma/core/input_error.h>
 #include <pneuma/geometry/gmsh_surface_reader.h>
 
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -128,6 +129,10 @@ namespace pneuma
         MshParser                             &parser;
         SurfaceMeshData                       &data;
         std::unordered_map<long, unsigned int> node_index;
+        /// Gmsh element tag of every cell, and the "warp" vectors by tag.
+        std::vector<long>                      cell_tags;
+        std::unordered_map<long, Tensor<1, 3>> warp;
+        long                                   element = 0;
 
         unsigned int
         vertex(const long tag) const
@@ -153,6 +158,7 @@ namespace pneuma
                                vertex(nodes[2])};
               c.material_id = static_cast<types::material_id>(tag);
               data.cells.push_back(c);
+              cell_tags.push_back(element);
             }
           else if (type == gmsh_line && tag > 0)
             {
@@ -171,6 +177,66 @@ namespace pneuma
         }
       };
 
+      /**
+       * An $ElementData section (the same in versions 2 and 4): keep the
+       * view named "warp" (3 components per element), the fabric's warp
+       * direction per element; other views are skipped.
+       */
+      void
+      read_element_data(MshParser &parser, Collector &collector)
+      {
+        auto        s       = parser.next("the element data's string tags");
+        const int   strings = parser.read<int>(s, "the number of string tags");
+        std::string name;
+        for (int k = 0; k < strings; ++k)
+          {
+            std::string line;
+            auto        tag_line = parser.next("a string tag");
+            std::getline(tag_line, line);
+            if (k == 0)
+              {
+                const auto a = line.find('"'), b = line.rfind('"');
+                name = (a != std::string::npos && b > a)
+                         ? line.substr(a + 1, b - a - 1)
+                         : line;
+              }
+          }
+        s               = parser.next("the element data's real tags");
+        const int reals = parser.read<int>(s, "the number of real tags");
+        for (int k = 0; k < reals; ++k)
+          parser.next("a real tag");
+        s                  = parser.next("the element data's integer tags");
+        const int integers = parser.read<int>(s, "the number of integer tags");
+        std::vector<long> tags;
+        for (int k = 0; k < integers; ++k)
+          {
+            auto t = parser.next("an integer tag");
+            tags.push_back(parser.read<long>(t, "an integer tag"));
+          }
+        if (tags.size() < 3)
+          parser.fail("has an $ElementData view without its number of "
+                      "components and entries");
+        const long components = tags[1], entries = tags[2];
+        if (name == "warp" && components != 3)
+          parser.fail("has a \"warp\" $ElementData view with "
+                      + std::to_string(components)
+                      + " components per element; it needs 3 (a vector)");
+        for (long k = 0; k < entries; ++k)
+          {
+            auto       line = parser.next("the last element data entry");
+            const long tag  = parser.read<long>(line, "an element tag");
+            if (name != "warp")
+              continue;
+            Tensor<1, 3> v;
+            for (unsigned int d = 0; d < 3; ++d)
+              v[d] = parser.read<double>(line, "a warp component");
+            if (!std::isfinite(v.norm()))
+              parser.fail("has a non-finite \"warp\" vector for element "
+                          + std::to_string(tag));
+            collector.warp[tag] = v;
+          }
+      }
+
       void
       read_version_2(MshParser &parser, Collector &collector)
       {
@@ -188,14 +254,16 @@ namespace pneuma
                   collector.data.vertices.push_back(parser.read_point(s));
                 }
             }
+          else if (section == "ElementData")
+            read_element_data(parser, collector);
           else if (section == "Elements")
             {
               auto       head = parser.next("the element count");
               const long n    = parser.read<long>(head, "the element count");
               for (long k = 0; k < n; ++k)
                 {
-                  auto s = parser.next("the last element");
-                  parser.read<long>(s, "an element tag");
+                  auto s             = parser.next("the last element");
+                  collector.element  = parser.read<long>(s, "an element tag");
                   const int type     = parser.read<int>(s, "an element type");
                   const int ntags    = parser.read<int>(s, "an element's tags");
                   int       physical = 0;
@@ -269,6 +337,8 @@ namespace pneuma
                     }
                 }
             }
+          else if (section == "ElementData")
+            read_element_data(parser, collector);
           else if (section == "Elements")
             {
               auto       head   = parser.next("the element blocks");
@@ -285,7 +355,8 @@ namespace pneuma
                   for (long k = 0; k < n; ++k)
                     {
                       auto line = parser.next("the last element");
-                      parser.read<long>(line, "an element tag");
+                      collector.element =
+                        parser.read<long>(line, "an element tag");
                       std::vector<long> nodes(nodes_of(type));
                       for (auto &v : nodes)
                         v = parser.read<long>(line, "an element's nodes");
@@ -323,6 +394,13 @@ namespace pneuma
           parser.fail("has the unsupported MSH version " + v.str()
                       + " (use 2.2 or 4.1)");
         }
+      if (!collector.warp.empty())
+        for (const auto tag : collector.cell_tags)
+          {
+            const auto it = collector.warp.find(tag);
+            data.cell_warp.push_back(it == collector.warp.end() ? Tensor<1, 3>()
+                                                                : it->second);
+          }
       return data;
     }
 

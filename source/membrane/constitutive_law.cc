@@ -66,9 +66,11 @@ namespace pneuma
             "A vector 'x, y, z' whose projection onto the surface is the "
             "material frame's first axis (the warp of a fabric; the fill "
             "is normal to it in the surface), e.g. '1, 0, 0' along a tube "
-            "on the x axis. Required by the orthotropic law and by an "
-            "unequal prestress; it must not be normal to the surface "
-            "anywhere in the region.",
+            "on the x axis; or 'gmsh': per element, the vector of the "
+            "Gmsh mesh file's $ElementData view named \"warp\" (panels "
+            "cut in different directions). Required by the orthotropic "
+            "law and by an unequal prestress; it must not be normal to "
+            "the surface anywhere in the region.",
             Patterns::Anything());
           prm.add_parameter(
             "Prestress",
@@ -107,7 +109,9 @@ namespace pneuma
           prm.leave_subsection();
 
           // The material frame.
-          if (!Utilities::trim(slot->warp_direction).empty())
+          if (Utilities::trim(slot->warp_direction) == "gmsh")
+            m.warp_from_mesh = true;
+          else if (!Utilities::trim(slot->warp_direction).empty())
             {
               const auto parts =
                 Utilities::split_string_list(slot->warp_direction, ',');
@@ -126,7 +130,8 @@ namespace pneuma
                           "must be a non-zero vector 'x, y, z', got '"
                             + slot->warp_direction + "'");
             }
-          check_input(m.law->isotropic() || m.warp_direction.norm() > 0.,
+          check_input(m.law->isotropic() || m.warp_direction.norm() > 0.
+                        || m.warp_from_mesh,
                       path + "/Warp direction",
                       "the law '" + slot->law
                         + "' is anisotropic and needs the direction of its "
@@ -152,7 +157,8 @@ namespace pneuma
                         path + "/Prestress",
                         "must be 'n' or 'n1, n2' in N/m, got '"
                           + slot->prestress + "'");
-            check_input(n.front() == n.back() || m.warp_direction.norm() > 0.,
+            check_input(n.front() == n.back() || m.warp_direction.norm() > 0.
+                          || m.warp_from_mesh,
                         path + "/Prestress",
                         "unequal warp and fill prestress needs the region's "
                         "Warp direction");

@@ -109,7 +109,10 @@ namespace pneuma
           const RegionMaterial &material =
             loaded ? materials[cell->material_id()]
                    : form_finding_laws.at(cell->material_id());
-          const double H    = material.thickness;
+          const double       H    = material.thickness;
+          const Tensor<1, 3> warp = material.warp(
+            material.warp_from_mesh ? geometry.cell_direction(cell)
+                                    : Tensor<1, 3>());
           const double sign = cell_orientation(geometry, fe_values);
           const bool   pressurised =
             loaded && loads.pressure_acts_on(cell->material_id());
@@ -117,8 +120,7 @@ namespace pneuma
           for (unsigned int q = 0; q < n_q; ++q)
             {
               const TangentFrame frame =
-                tangent_frame(sign * fe_values.normal_vector(q),
-                              material.warp_direction);
+                tangent_frame(sign * fe_values.normal_vector(q), warp);
               Tensor<2, 3> Gu;
               for (unsigned int i = 0; i < n_dofs; ++i)
                 {

@@ -377,7 +377,21 @@ namespace pneuma
               if (material.law->isotropic())
                 continue;
               fe_values.reinit(cell);
-              const Tensor<1, 3> &d = material.warp_direction;
+              const Tensor<1, 3> d = material.warp(
+                material.warp_from_mesh ? scene.cell_direction(cell)
+                                        : Tensor<1, 3>());
+              if (d.norm() == 0.)
+                {
+                  std::ostringstream where;
+                  where << cell->center();
+                  error = "Materials/Region "
+                          + std::to_string(cell->material_id())
+                          + "/Warp direction: 'gmsh' needs a \"warp\" "
+                            "$ElementData vector for every element of the "
+                            "region in Geometry/gmsh/Mesh file; the cell at ("
+                          + where.str() + ") has none";
+                  continue;
+                }
               for (unsigned int q = 0; q < quadrature.size(); ++q)
                 {
                   const Tensor<1, 3> &N = fe_values.normal_vector(q);
@@ -1010,10 +1024,8 @@ namespace pneuma
         }
       if (materials.any_wrinkling())
         {
-          const auto w = postprocess::wrinkling_summary(*mapping_cache,
-                                                        dofs,
-                                                        materials,
-                                                        field);
+          const auto w = postprocess::wrinkling_summary(
+            *mapping_cache, dofs, materials, scene, field);
           statistics.add(
             run, "wrinkled_area", "m^2", w.areas[1], Statistics::report);
           statistics.add(
@@ -1066,7 +1078,7 @@ namespace pneuma
                               DataOut<2, 3>::type_dof_data,
                               interpretation);
       const postprocess::CellFields fields = postprocess::membrane_cell_fields(
-        *mapping_cache, dofs, materials, field);
+        *mapping_cache, dofs, materials, scene, field);
       output_cell_data.clear();
       output_cell_data.reserve(fields.names.size() + 1);
       for (unsigned int i = 0; i < fields.names.size(); ++i)

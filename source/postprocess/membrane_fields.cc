@@ -18,6 +18,7 @@ namespace pneuma
     membrane_cell_fields(const Mapping<2, 3>             &mapping,
                          const DoFHandler<2, 3>          &dof_handler,
                          const membrane::MaterialRegions &materials,
+                         const geometry::SceneGenerator  &geometry,
                          const LA::Vector                &u)
     {
       CellFields f;
@@ -81,7 +82,10 @@ namespace pneuma
               {
                 const auto frame =
                   membrane::tangent_frame(fe_values.normal_vector(q),
-                                          material.warp_direction);
+                                          material.warp(
+                                            material.warp_from_mesh
+                                              ? geometry.cell_direction(cell)
+                                              : Tensor<1, 3>()));
                 const auto a = membrane::deformed_tangents(frame, grad_u[q]);
                 const auto C = membrane::right_cauchy_green(a);
                 SymmetricTensor<2, 2> S;
@@ -168,6 +172,7 @@ namespace pneuma
     wrinkling_summary(const Mapping<2, 3>             &mapping,
                       const DoFHandler<2, 3>          &dof_handler,
                       const membrane::MaterialRegions &materials,
+                      const geometry::SceneGenerator  &geometry,
                       const LA::Vector                &u)
     {
       WrinklingSummary result;
@@ -193,7 +198,10 @@ namespace pneuma
               {
                 const auto frame =
                   membrane::tangent_frame(fe_values.normal_vector(q),
-                                          material.warp_direction);
+                                          material.warp(
+                                            material.warp_from_mesh
+                                              ? geometry.cell_direction(cell)
+                                              : Tensor<1, 3>()));
                 const auto C = membrane::right_cauchy_green(
                   membrane::deformed_tangents(frame, grad_u[q]));
                 const auto state = material.tension_field->state(C);

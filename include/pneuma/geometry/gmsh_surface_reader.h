@@ -40,6 +40,9 @@ namespace pneuma
       std::vector<CellData<2>> cells;
       /// Lines with a physical curve tag, as boundary ids.
       std::vector<CellData<1>> tagged_lines;
+      /// Per cell: the vector of the $ElementData view named "warp" for
+      /// its element (zero where the file gives none).
+      std::vector<Tensor<1, 3>> cell_warp;
     };
 
     /// A line of a surface mesh by its two vertex indices, smaller first.

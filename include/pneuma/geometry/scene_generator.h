@@ -82,6 +82,17 @@ namespace pneuma
       {
         return surface->is_closed();
       }
+      /// The mesh file's direction for @p cell (that of its coarse cell;
+      /// zero where the file gives none).
+      template <class Iterator>
+      Tensor<1, 3>
+      cell_direction(const Iterator &cell) const
+      {
+        typename Triangulation<2, 3>::cell_iterator coarse(cell);
+        while (coarse->level() > 0)
+          coarse = coarse->parent();
+        return surface->coarse_cell_direction(coarse->index());
+      }
       /// The geometry type as named in the parameter file.
       const std::string &
       type() const

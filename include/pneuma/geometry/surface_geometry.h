@@ -53,6 +53,14 @@ namespace pneuma
       /// True for surfaces that enclose a volume.
       virtual bool
       is_closed() const = 0;
+      /// A direction given by the mesh file for coarse cell @p index (a
+      /// fabric's warp; zero: none).
+      virtual Tensor<1, 3>
+      coarse_cell_direction(const unsigned int index) const
+      {
+        (void)index;
+        return {};
+      }
     };
 
     /// The registry of surface geometries.

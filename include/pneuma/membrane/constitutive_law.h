@@ -99,6 +99,16 @@ namespace pneuma
       /// The warp direction whose projection onto the tangent plane is the
       /// frame's e_1 (zero: none, the frame follows the normal only).
       dealii::Tensor<1, 3> warp_direction;
+      /// The warp comes from the mesh file (Warp direction = gmsh: the
+      /// Gmsh $ElementData view "warp"), per cell.
+      bool warp_from_mesh = false;
+      /// The warp direction of a cell: the mesh's if warp_from_mesh (give
+      /// the geometry's cell_direction(cell)), else warp_direction.
+      dealii::Tensor<1, 3>
+      warp(const dealii::Tensor<1, 3> &from_mesh) const
+      {
+        return warp_from_mesh ? from_mesh : warp_direction;
+      }
       /// The prestress n_1, n_2 [N/m] along warp and fill (also the target
       /// of form finding).
       std::array<double, 2> prestress{{0., 0.}};

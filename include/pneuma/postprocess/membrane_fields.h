@@ -18,6 +18,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <pneuma/core/linear_algebra.h>
+#include <pneuma/geometry/scene_generator.h>
 #include <pneuma/membrane/constitutive_law.h>
 
 #include <array>
@@ -42,6 +43,7 @@ namespace pneuma
     membrane_cell_fields(const Mapping<2, 3>             &mapping,
                          const DoFHandler<2, 3>          &dof_handler,
                          const membrane::MaterialRegions &materials,
+                         const geometry::SceneGenerator  &geometry,
                          const LA::Vector                &u);
 
     /// The wrinkling of the regions that wrinkle, over all ranks.
@@ -59,6 +61,7 @@ namespace pneuma
     wrinkling_summary(const Mapping<2, 3>             &mapping,
                       const DoFHandler<2, 3>          &dof_handler,
                       const membrane::MaterialRegions &materials,
+                      const geometry::SceneGenerator  &geometry,
                       const LA::Vector                &u);
   } // namespace postprocess
 } // namespace pneuma

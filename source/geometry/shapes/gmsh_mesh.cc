@@ -64,6 +64,7 @@ namespace pneuma
                       "'" + mesh_file + "' has no quadrilateral cells");
           split_junctions(data);
           create_from_surface_data(data, coarse);
+          cell_warp = data.cell_warp;
           check_input(coarse.n_active_cells() > 0,
                       parameter,
                       "'" + mesh_file + "' has no surface cells");
@@ -84,7 +85,15 @@ namespace pneuma
           return orientation_mode != "as meshed";
         }
 
+        Tensor<1, 3>
+        coarse_cell_direction(const unsigned int index) const override
+        {
+          return index < cell_warp.size() ? cell_warp[index] : Tensor<1, 3>();
+        }
+
       private:
+        /// The "warp" $ElementData vector of every cell (empty: none).
+        mutable std::vector<Tensor<1, 3>> cell_warp;
         std::string         mesh_file, orientation_mode = "as meshed";
         std::vector<double> interior{0., 0., 0.};
         std::string         parameter = "Geometry/gmsh/Mesh file";
