@@ -110,11 +110,9 @@ namespace pneuma
             loaded ? materials[cell->material_id()]
                    : form_finding_laws.at(cell->material_id());
           const double       H    = material.thickness;
-          const Tensor<1, 3> warp = material.warp(
-            material.warp_from_mesh ? geometry.cell_direction(cell)
-                                    : Tensor<1, 3>());
-          const double sign = cell_orientation(geometry, fe_values);
-          const bool   pressurised =
+          const Tensor<1, 3> warp = material.warp(geometry, cell);
+          const double       sign = cell_orientation(geometry, fe_values);
+          const bool         pressurised =
             loaded && loads.pressure_acts_on(cell->material_id());
 
           for (unsigned int q = 0; q < n_q; ++q)

@@ -377,9 +377,7 @@ namespace pneuma
               if (material.law->isotropic())
                 continue;
               fe_values.reinit(cell);
-              const Tensor<1, 3> d = material.warp(
-                material.warp_from_mesh ? scene.cell_direction(cell)
-                                        : Tensor<1, 3>());
+              const Tensor<1, 3> d = material.warp(scene, cell);
               if (d.norm() == 0.)
                 {
                   std::ostringstream where;
@@ -662,7 +660,6 @@ namespace pneuma
                   "form finding and adaptive refinement cannot be combined "
                   "(new cells would lie on the input's surface)");
       std::map<types::material_id, RegionMaterial> laws;
-      double                                       n_max = 0.;
       for (const auto id : mesh_ids)
         {
           const RegionMaterial &m    = materials[id];
@@ -680,14 +677,12 @@ namespace pneuma
           f.law = std::make_shared<FormFindingLaw>(n1, n2, lambda, m.thickness);
           f.tension_field.reset();
           laws[id] = f;
-          n_max    = std::max(n_max, std::max(n1, n2));
         }
       assembler->set_form_finding(laws);
       form_finding = true;
       // Nodes move along the normals of the input surface.
       compute_motion_directions();
 
-      (void)n_max;
       if (reference_shift.size() == 0)
         {
           reference_shift.reinit(owned_dofs, relevant_dofs, comm);

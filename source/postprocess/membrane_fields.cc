@@ -69,6 +69,7 @@ namespace pneuma
             fe_values.reinit(cell);
             fe_values[displacement].get_function_gradients(u, grad_u);
             const auto           &material = materials[cell->material_id()];
+            const Tensor<1, 3>    warp     = material.warp(geometry, cell);
             SymmetricTensor<2, 3> n_avg;
             SymmetricTensor<2, 2> E_avg;
             Tensor<1, 3>          normal_avg;
@@ -81,11 +82,7 @@ namespace pneuma
             for (unsigned int q = 0; q < quadrature.size(); ++q)
               {
                 const auto frame =
-                  membrane::tangent_frame(fe_values.normal_vector(q),
-                                          material.warp(
-                                            material.warp_from_mesh
-                                              ? geometry.cell_direction(cell)
-                                              : Tensor<1, 3>()));
+                  membrane::tangent_frame(fe_values.normal_vector(q), warp);
                 const auto a = membrane::deformed_tangents(frame, grad_u[q]);
                 const auto C = membrane::right_cauchy_green(a);
                 SymmetricTensor<2, 2> S;
@@ -192,16 +189,13 @@ namespace pneuma
             const auto &material = materials[cell->material_id()];
             if (!material.tension_field)
               continue;
+            const Tensor<1, 3> warp = material.warp(geometry, cell);
             fe_values.reinit(cell);
             fe_values[displacement].get_function_gradients(u, grad_u);
             for (unsigned int q = 0; q < quadrature.size(); ++q)
               {
                 const auto frame =
-                  membrane::tangent_frame(fe_values.normal_vector(q),
-                                          material.warp(
-                                            material.warp_from_mesh
-                                              ? geometry.cell_direction(cell)
-                                              : Tensor<1, 3>()));
+                  membrane::tangent_frame(fe_values.normal_vector(q), warp);
                 const auto C = membrane::right_cauchy_green(
                   membrane::deformed_tangents(frame, grad_u[q]));
                 const auto state = material.tension_field->state(C);

@@ -102,12 +102,13 @@ namespace pneuma
       /// The warp comes from the mesh file (Warp direction = gmsh: the
       /// Gmsh $ElementData view "warp"), per cell.
       bool warp_from_mesh = false;
-      /// The warp direction of a cell: the mesh's if warp_from_mesh (give
-      /// the geometry's cell_direction(cell)), else warp_direction.
+      /// The warp direction of @p cell: the mesh's (@p geometry's
+      /// cell_direction) if warp_from_mesh, else warp_direction.
+      template <class Geometry, class Iterator>
       dealii::Tensor<1, 3>
-      warp(const dealii::Tensor<1, 3> &from_mesh) const
+      warp(const Geometry &geometry, const Iterator &cell) const
       {
-        return warp_from_mesh ? from_mesh : warp_direction;
+        return warp_from_mesh ? geometry.cell_direction(cell) : warp_direction;
       }
       /// The prestress n_1, n_2 [N/m] along warp and fill (also the target
       /// of form finding).
