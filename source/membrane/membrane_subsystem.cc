@@ -14,6 +14,7 @@
 #include <pneuma/membrane/form_finding_law.h>
 #include <pneuma/membrane/membrane_subsystem.h>
 #include <pneuma/postprocess/membrane_fields.h>
+#include <pneuma/postprocess/membrane_probes.h>
 
 #include <fstream>
 #include <limits>
@@ -73,6 +74,16 @@ namespace pneuma
                         "Points 'x,y,z; x,y,z; ...' [m]: the displacement of "
                         "the nearest mesh vertex is written to history.csv "
                         "and summary.json (columns m0_u_x, ...).");
+      prm.declare_entry(
+        "Probe points",
+        "",
+        Patterns::Anything(),
+        "Points 'x,y,z; ...' [m] on the reference surface: the membrane "
+        "state at the point itself is written to history.csv and "
+        "summary.json (p0_N1, p0_N2 [N/m] principal forces, p0_N1_direction; "
+        "where the region wrinkles also p0_wrinkling_state 0/1/2, "
+        "p0_wrinkle_direction and p0_plain_minor_force [N/m], which is "
+        "negative where compression is relaxed away).");
       prm.leave_subsection();
     }
 
@@ -90,6 +101,10 @@ namespace pneuma
            Utilities::split_string_list(prm.get("Monitor points"), ';'))
         monitor_points.push_back(
           loads::parse_point(item, "Output/Monitor points"));
+      probe_points.clear();
+      for (const auto &item :
+           Utilities::split_string_list(prm.get("Probe points"), ';'))
+        probe_points.push_back(loads::parse_point(item, "Output/Probe points"));
       prm.leave_subsection();
     }
 
@@ -774,6 +789,15 @@ namespace pneuma
     MembraneSubsystem::initialize(const LA::Vector &field, const double)
     {
       locate_monitor_points();
+      // A probe off the surface is an input error before the first step.
+      if (!probe_points.empty())
+        postprocess::membrane_probes(*mapping_cache,
+                                     dofs,
+                                     materials,
+                                     scene,
+                                     field,
+                                     probe_points,
+                                     "Output/Probe points");
       reference_volume =
         scene.is_closed() ? assembler->enclosed_volume(field) : 0.;
     }
@@ -1052,6 +1076,62 @@ namespace pneuma
             group, "position", "m", monitor_positions[m], Statistics::summary);
           statistics.add_vector(
             group, "u", "m", u, Statistics::all, Statistics::Reduction::sum);
+        }
+      if (!probe_points.empty())
+        {
+          const auto probes =
+            postprocess::membrane_probes(*mapping_cache,
+                                         dofs,
+                                         materials,
+                                         scene,
+                                         field,
+                                         probe_points,
+                                         "Output/Probe points");
+          const auto sum = Statistics::Reduction::sum;
+          const auto vec = [](const Tensor<1, 3> &t) {
+            return std::array<double, 3>{{t[0], t[1], t[2]}};
+          };
+          for (unsigned int k = 0; k < probes.size(); ++k)
+            {
+              const auto           &p = probes[k];
+              const StatisticsGroup group{"p", "probe_points", "probe", k};
+              statistics.add_vector(
+                group,
+                "position",
+                "m",
+                {{probe_points[k][0], probe_points[k][1], probe_points[k][2]}},
+                Statistics::summary);
+              statistics.add(
+                group, "N1", "N/m", p.forces.N1, Statistics::all, sum);
+              statistics.add(
+                group, "N2", "N/m", p.forces.N2, Statistics::all, sum);
+              statistics.add_vector(group,
+                                    "N1_direction",
+                                    "",
+                                    vec(p.forces.direction_1),
+                                    Statistics::all,
+                                    sum);
+              if (materials.any_wrinkling())
+                {
+                  statistics.add_count(group,
+                                       "wrinkling_state",
+                                       p.wrinkling_state,
+                                       Statistics::all,
+                                       sum);
+                  statistics.add_vector(group,
+                                        "wrinkle_direction",
+                                        "",
+                                        vec(p.wrinkle_direction),
+                                        Statistics::all,
+                                        sum);
+                  statistics.add(group,
+                                 "plain_minor_force",
+                                 "N/m",
+                                 p.plain_minor_force,
+                                 Statistics::all,
+                                 sum);
+                }
+            }
         }
     }
 

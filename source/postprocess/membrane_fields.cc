@@ -14,6 +14,21 @@ namespace pneuma
 {
   namespace postprocess
   {
+    PrincipalForces
+    in_plane_principal(const SymmetricTensor<2, 3> &n,
+                       const Tensor<1, 3>          &normal)
+    {
+      const auto   eig = eigenvectors(n);
+      unsigned int kn  = 0;
+      for (unsigned int e = 1; e < 3; ++e)
+        if (std::abs(eig[e].second * normal)
+            > std::abs(eig[kn].second * normal))
+          kn = e;
+      const unsigned int k1 = (kn == 0) ? 1 : 0;
+      const unsigned int k2 = (kn == 2) ? 1 : 2;
+      return {eig[k1].first, eig[k2].first, eig[k1].second, eig[k2].second};
+    }
+
     CellFields
     membrane_cell_fields(const Mapping<2, 3>             &mapping,
                          const DoFHandler<2, 3>          &dof_handler,
@@ -120,22 +135,14 @@ namespace pneuma
             f.values[3][k]       = n_avg[0][1];
             f.values[4][k]       = n_avg[0][2];
             f.values[5][k]       = n_avg[1][2];
-            // In-plane principal forces: drop the eigenvector along the
-            // current normal.
-            const auto   eig = eigenvectors(n_avg);
-            unsigned int kn  = 0;
-            for (unsigned int e = 1; e < 3; ++e)
-              if (std::abs(eig[e].second * normal_avg)
-                  > std::abs(eig[kn].second * normal_avg))
-                kn = e;
-            const unsigned int k1 = (kn == 0) ? 1 : 0;
-            const unsigned int k2 = (kn == 2) ? 1 : 2;
-            f.values[6][k]        = eig[k1].first;
-            f.values[7][k]        = eig[k2].first;
+            const PrincipalForces principal =
+              in_plane_principal(n_avg, normal_avg);
+            f.values[6][k] = principal.N1;
+            f.values[7][k] = principal.N2;
             for (unsigned int d = 0; d < 3; ++d)
               {
-                f.values[8 + d][k]  = eig[k1].second[d];
-                f.values[11 + d][k] = eig[k2].second[d];
+                f.values[8 + d][k]  = principal.direction_1[d];
+                f.values[11 + d][k] = principal.direction_2[d];
               }
             // Principal strains m +- r with r = |((E11 - E22)/2, E12)|:
             // the root of a sum of squares, never of a round-off negative

@@ -304,6 +304,8 @@ namespace pneuma
       loads::RigidRegions          rigid_regions;
       unsigned int                 fe_degree = 1;
       std::vector<Point<3>>        monitor_points;
+      /// Output/Probe points (postprocess/membrane_probes.h).
+      std::vector<Point<3>> probe_points;
 
       parallel::distributed::Triangulation<2, 3> mesh;
       bool                                       mesh_created = false;

@@ -13,6 +13,7 @@
  * would carry).
  */
 
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/vector.h>
@@ -30,6 +31,20 @@ namespace pneuma
   namespace postprocess
   {
     using namespace dealii;
+
+    /// The in-plane principal membrane forces of a membrane force tensor.
+    struct PrincipalForces
+    {
+      /// N1 >= N2 [N/m] and their unit directions.
+      double       N1 = 0., N2 = 0.;
+      Tensor<1, 3> direction_1, direction_2;
+    };
+
+    /// The principal forces of @p n in the surface of normal @p normal
+    /// (the eigenvector along the normal dropped).
+    PrincipalForces
+    in_plane_principal(const SymmetricTensor<2, 3> &n,
+                       const Tensor<1, 3>          &normal);
 
     /// Named cell-data vectors (one value per active cell).
     struct CellFields
