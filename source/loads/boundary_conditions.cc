@@ -53,9 +53,12 @@ namespace pneuma
                         Patterns::Anything());
       prm.add_parameter("Fixed regions",
                         text.fixed_regions,
-                        "Material ids whose nodes are all held fixed "
-                        "(rigid, fixed regions such as clamped end plates).",
-                        Patterns::List(Patterns::Integer(0)));
+                        "Material ids whose nodes are all held: 'ids' "
+                        "(every component: rigid, fixed regions such as "
+                        "clamped end plates) or 'ids: components; ...', "
+                        "e.g. '0: z' keeps a flat sheet in its plane (a "
+                        "plane-stress analysis).",
+                        Patterns::Anything());
       prm.add_parameter("Prescribed displacement boundaries",
                         text.displaced_boundaries,
                         "Boundary ids whose displacement follows the "
@@ -101,9 +104,23 @@ namespace pneuma
           const Point<3> p = parse_point(kv[0], path);
           fixed_points.emplace_back(p, parse_components(kv[1], path));
         }
-      const auto fr =
-        parse_id_list(text.fixed_regions, "Boundary conditions/Fixed regions");
-      fixed_regions = std::set<types::material_id>(fr.begin(), fr.end());
+      fixed_regions.clear();
+      for (const auto &item :
+           Utilities::split_string_list(text.fixed_regions, ';'))
+        {
+          const std::string path = "Boundary conditions/Fixed regions";
+          const auto        kv   = Utilities::split_string_list(item, ':');
+          check_input(kv.size() == 1 || kv.size() == 2,
+                      path,
+                      "'" + item
+                        + "' is not of the form 'ids' or 'ids: "
+                          "components'");
+          const std::array<bool, 3> mask =
+            kv.size() == 2 ? parse_components(kv[1], path)
+                           : std::array<bool, 3>{{true, true, true}};
+          for (const auto id : parse_id_list(kv[0], path))
+            fixed_regions[id] = mask;
+        }
       const auto dr =
         parse_id_list(text.displaced_regions,
                       "Boundary conditions/Prescribed displacement regions");
@@ -152,7 +169,7 @@ namespace pneuma
         check_input(b.count(id),
                     "Boundary conditions/Prescribed displacement boundaries",
                     "the mesh has no boundary with id " + std::to_string(id));
-      for (const auto id : fixed_regions)
+      for (const auto &[id, mask] : fixed_regions)
         check_input(m.count(id),
                     "Boundary conditions/Fixed regions",
                     "the mesh has no cells in region " + std::to_string(id));
@@ -191,13 +208,17 @@ namespace pneuma
 
       std::vector<types::global_dof_index> dofs;
       for (const auto &cell : dof_handler.active_cell_iterators())
-        if (!cell->is_artificial() && fixed_regions.count(cell->material_id()))
-          {
-            dofs.resize(cell->get_fe().n_dofs_per_cell());
-            cell->get_dof_indices(dofs);
-            for (const auto d : dofs)
-              values[d] = 0.;
-          }
+        if (!cell->is_artificial())
+          if (const auto region = fixed_regions.find(cell->material_id());
+              region != fixed_regions.end())
+            {
+              const auto &fe = cell->get_fe();
+              dofs.resize(fe.n_dofs_per_cell());
+              cell->get_dof_indices(dofs);
+              for (unsigned int i = 0; i < dofs.size(); ++i)
+                if (region->second[fe.system_to_component_index(i).first])
+                  values[dofs[i]] = 0.;
+            }
 
       if (!displaced_regions.empty())
         {

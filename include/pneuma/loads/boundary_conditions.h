@@ -68,12 +68,15 @@ namespace pneuma
       void
       check_against_mesh(const DoFHandler<2, 3> &dof_handler) const;
 
-      /// Material ids whose nodes are all prescribed (fixed or displaced).
+      /// Material ids whose nodes are prescribed in every component (fixed
+      /// or displaced).
       std::set<types::material_id>
       prescribed_regions() const
       {
-        auto ids = fixed_regions;
-        ids.insert(displaced_regions.begin(), displaced_regions.end());
+        auto ids = displaced_regions;
+        for (const auto &[id, mask] : fixed_regions)
+          if (mask[0] && mask[1] && mask[2])
+            ids.insert(id);
         return ids;
       }
 
@@ -105,7 +108,7 @@ namespace pneuma
       /// What they hold.
       std::map<types::boundary_id, std::array<bool, 3>>     fixed_boundaries;
       std::vector<std::pair<Point<3>, std::array<bool, 3>>> fixed_points;
-      std::set<types::material_id>                          fixed_regions;
+      std::map<types::material_id, std::array<bool, 3>>     fixed_regions;
       std::set<types::material_id>                          displaced_regions;
       std::set<types::boundary_id>                  displaced_boundaries;
       std::unique_ptr<Functions::ParsedFunction<3>> displacement_function;
