@@ -291,8 +291,11 @@ namespace pneuma
     CableSystem::add_support_constraints(
       AffineConstraints<double> &constraints) const
     {
-      if (!is_owner)
-        return;
+      // Every rank that stores a supported dof constrains it, not only the
+      // owner (rank 0): contact assembles cable forces on the rank of the
+      // membrane cell, and a rank that did not know an end node is held
+      // would add them to its row, which then moved in the update (2 ranks
+      // disagreed with 1 and stalled on the tensairity scene).
       for (const auto &b : bodies)
         {
           const auto add =
@@ -304,7 +307,8 @@ namespace pneuma
               const unsigned int n =
                 (s == EndSupport::fixed) ? b->n_components : 3;
               for (unsigned int c = 0; c < n; ++c)
-                if (c >= 3 || held[c])
+                if ((c >= 3 || held[c])
+                    && constraints.can_store_line(b->offset + dofs[c]))
                   constraints.add_line(b->offset + dofs[c]);
             };
           add(b->definition.start_support,

@@ -206,15 +206,17 @@ namespace pneuma
                           NewtonResult             &result,
                           const BorderedVector     *assembled) const
     {
-      BorderedVector residual(u), trial(u), du(u), u_trial(u), Lx(u);
-      // r_s(u) = r(u) + s L (u - u_anchor): the regularised residual.
+      BorderedVector residual(u), trial(u), du(u), u_trial(u), Lx(u), offset(u);
+      // r_s(u) = r(u) + s L (u - u_anchor): the regularised residual, with
+      // its own scratch vector (du must survive the line search: a
+      // backtracking step reuses it).
       const auto evaluate = [&](const BorderedVector &x, BorderedVector &r) {
         problem.assemble(x, r);
         if (phase.shift > 0.)
           {
-            du = x;
-            du -= phase.anchor;
-            problem.laplacian_vmult(du, Lx);
+            offset = x;
+            offset -= phase.anchor;
+            problem.laplacian_vmult(offset, Lx);
             r.add(phase.shift, Lx);
           }
         return r.l2_norm();
