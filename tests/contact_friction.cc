@@ -111,6 +111,33 @@ main(int argc, char **argv)
                                    "cable1_end_reaction")[2],
                                  T1 * std::exp(mu * M_PI),
                                  5e-3);
+        // The whole wrap slips, and the slip is counted (before the
+        // anchors move at the commit).
+        const double slipping = result.get("contact1_slip_points"),
+                     active   = result.get("contact1_active_points");
+        std::printf("half wrap: slipping points %g of %g active %s\n",
+                    slipping,
+                    active,
+                    slipping == active && active > 0. ? "PASS" : "FAIL");
+        ok &= slipping == active && active > 0.;
+        // The cable's balance: its end reactions (with the contact forces
+        // on its end elements), the dead force and the contact resultant.
+        {
+          const auto   a = result.summary.get_vector("cable1_start_reaction");
+          const auto   b = result.summary.get_vector("cable1_end_reaction");
+          const auto   f = result.summary.get_vector("contact1_force");
+          const double dead[3] = {0., 0., -T1};
+          double       sum     = 0.;
+          for (unsigned int c = 0; c < 3; ++c)
+            sum += std::pow(a[c] + b[c] + dead[c] + f[c], 2);
+          const bool balanced = std::sqrt(sum) < 1e-6 * T1;
+
+          std::printf("half wrap: |reactions + dead force + contact "
+                      "resultant| %s 1e-6 T1 %s\n",
+                      balanced ? "<" : ">=",
+                      balanced ? "PASS" : "FAIL");
+          ok &= balanced;
+        }
         // The eigen analysis of the friction state by Arnoldi on the LU
         // (the eigenvalues nearest zero; this slipping wrap's tangent is
         // symmetric to 3e-11, so the automatic choice would be Lanczos):

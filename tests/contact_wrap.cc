@@ -204,6 +204,27 @@ main(int argc, char **argv)
                     std::abs(u * t) < 5e-7 ? 0. : std::abs(u * t),
                     pass ? "PASS" : "FAIL");
         ok &= pass;
+        // The reports balance: per cable, the end reactions (which take
+        // the contact forces on the end elements) and the contact
+        // resultant; over the scene, every support and the applied loads.
+        const auto a     = s.summary.get_vector("cable1_start_reaction");
+        const auto b     = s.summary.get_vector("cable1_end_reaction");
+        const auto f     = s.summary.get_vector("contact1_force");
+        const auto rm    = s.summary.get_vector("reaction");
+        const auto fa    = s.summary.get_vector("applied_load");
+        double     cable = 0., scene = 0.;
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            cable += std::pow(a[d] + b[d] + f[d], 2);
+            scene += std::pow(rm[d] + a[d] + b[d] + fa[d], 2);
+          }
+        const bool balanced =
+          std::sqrt(cable) < 1e-6 * T && std::sqrt(scene) < 1e-6 * T;
+        std::printf("  |cable reactions + contact resultant| and |all "
+                    "reactions + applied loads| %s 1e-6 T %s\n",
+                    balanced ? "<" : ">=",
+                    balanced ? "PASS" : "FAIL");
+        ok &= balanced;
       }
   }
   std::printf("%s\n", ok ? "OK" : "FAILED");

@@ -1,4 +1,5 @@
 #include <pneuma/cables/cable_subsystem.h>
+#include <pneuma/contact/contact_subsystem.h>
 #include <pneuma/core/input_error.h>
 #include <pneuma/core/input_layout.h>
 #include <pneuma/core/model.h>
@@ -210,6 +211,12 @@ namespace pneuma
       return Utilities::MPI::max(n, model.mpi_communicator());
     }
 
+    bool
+    CableSubsystem::needs_support_residual() const
+    {
+      return model.find<contact::ContactSubsystem>() != nullptr;
+    }
+
     void
     CableSubsystem::add_statistics(Statistics       &statistics,
                                    const LA::Vector &field) const
@@ -217,8 +224,13 @@ namespace pneuma
       using S            = Statistics;
       constexpr auto all = S::all, report = S::report, summary = S::summary;
       constexpr auto root = S::Reduction::root;
-      // The reports exist on rank 0, which owns the cable dofs.
-      auto reports = cables.reports(model.current_time, field);
+      // The reports exist on rank 0, which owns the cable dofs. With
+      // contact, the end reactions take the contact forces too.
+      auto reports =
+        cables.reports(model.current_time,
+                       field,
+                       needs_support_residual() ? &model.support_residual()
+                                                : nullptr);
       reports.resize(parameters.size());
       statistics.add_count(StatisticsGroup::run(),
                            "cable_elements",

@@ -737,7 +737,9 @@ namespace pneuma
     }
 
     std::vector<CableReport>
-    CableSystem::reports(const double t, const LA::Vector &u) const
+    CableSystem::reports(const double      t,
+                         const LA::Vector &u,
+                         const LA::Vector *support) const
     {
       std::vector<CableReport> result;
       if (!is_owner)
@@ -782,7 +784,14 @@ namespace pneuma
                   r.end_reaction[c]       = nodal[b->end_dofs[c]];
                   r.start_displacement[c] = local_u[b->start_dofs[c]];
                   r.end_displacement[c]   = local_u[b->end_dofs[c]];
-                  if (d.has_end_forces)
+                  if (support)
+                    {
+                      r.start_reaction[c] =
+                        (*support)[b->offset + b->start_dofs[c]];
+                      r.end_reaction[c] =
+                        (*support)[b->offset + b->end_dofs[c]];
+                    }
+                  else if (d.has_end_forces)
                     {
                       r.start_reaction[c] -=
                         d.start_force->value(b->start_point, c);

@@ -110,7 +110,8 @@ namespace pneuma
     ContactSubsystem::assemble(const Assembly &a)
     {
       TimerOutput::Scope t(model.timer(), "contact");
-      contact->assemble(*a.field, *a.constraints, a.tangent, a.residual);
+      contact->assemble(
+        *a.field, *a.constraints, a.tangent, a.residual, a.probe);
     }
 
     void

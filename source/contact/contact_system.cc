@@ -250,8 +250,26 @@ namespace pneuma
     ContactSystem::assemble(const LA::Vector                &u,
                             const AffineConstraints<double> &constraints,
                             LA::SparseMatrix                *tangent,
-                            LA::Vector                      *residual)
+                            LA::Vector                      *residual,
+                            const bool                       probe)
     {
+      // A probe leaves the recorded point data as it was.
+      struct Record
+      {
+        std::vector<double>   line_load;
+        std::vector<int>      pending_anchor;
+        std::vector<Point<2>> pending_xi;
+      };
+      std::vector<Record>        saved;
+      std::vector<ContactReport> saved_reports;
+      std::vector<double>        saved_master_force;
+      if (probe)
+        {
+          for (const auto &d : pairs)
+            saved.push_back({d.line_load, d.pending_anchor, d.pending_xi});
+          saved_reports      = last_reports;
+          saved_master_force = master_force;
+        }
       std::fill(master_force.begin(), master_force.end(), 0.);
       const int rank = Utilities::MPI::this_mpi_process(comm);
       for (unsigned int k = 0; k < pairs.size(); ++k)
@@ -438,6 +456,9 @@ namespace pneuma
                                  tangent,
                                  residual);
                   report.friction_force += fs.traction.norm() * pt.weight;
+                  // The resultant on the cable takes the friction too.
+                  for (unsigned int i = 0; i < 3; ++i)
+                    report.force[i] += fs.traction[i] * pt.weight;
                   if (fs.slip)
                     {
                       ++report.slip_points;
@@ -486,11 +507,23 @@ namespace pneuma
         residual->compress(VectorOperation::add);
       if (tangent)
         tangent->compress(VectorOperation::add);
+      if (probe)
+        {
+          for (unsigned int k = 0; k < pairs.size(); ++k)
+            {
+              pairs[k].line_load      = std::move(saved[k].line_load);
+              pairs[k].pending_anchor = std::move(saved[k].pending_anchor);
+              pairs[k].pending_xi     = std::move(saved[k].pending_xi);
+            }
+          last_reports = std::move(saved_reports);
+          master_force = std::move(saved_master_force);
+        }
     }
 
     void
     ContactSystem::commit_step()
     {
+      committed_reports = last_reports;
       for (auto &d : pairs)
         {
           d.anchor    = d.pending_anchor;

@@ -8,6 +8,7 @@
 #include <pneuma/core/model.h>
 #include <pneuma/solvers/path_following.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace pneuma
@@ -450,6 +451,27 @@ namespace pneuma
                         const solvers::BorderedVector &state)
   {
     ghost(state.field);
+    const bool support =
+      std::any_of(subsystems.begin(), subsystems.end(), [](const auto &s) {
+        return s->needs_support_residual();
+      });
+    if (support)
+      {
+        TimerOutput::Scope ts(*timers, "assembly");
+        support_forces = make_field();
+        Vector<double> border_residual(n_border());
+        Assembly       a;
+        a.time            = current_time;
+        a.field           = &ghosted;
+        a.border          = &state.border;
+        a.constraints     = &kinematic;
+        a.residual        = &support_forces;
+        a.border_residual = &border_residual;
+        a.coupling        = &scratch_coupling;
+        a.probe           = true;
+        for (const auto &s : subsystems)
+          s->assemble(a);
+      }
     for (const auto &s : subsystems)
       s->add_statistics(statistics, ghosted);
   }

@@ -5,6 +5,7 @@
 #include <deal.II/fe/mapping_q_cache.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
+#include <pneuma/contact/contact_subsystem.h>
 #include <pneuma/core/checkpoint.h>
 #include <pneuma/core/collective_error.h>
 #include <pneuma/core/input_error.h>
@@ -901,6 +902,12 @@ namespace pneuma
         }
     }
 
+    bool
+    MembraneSubsystem::needs_support_residual() const
+    {
+      return model.find<contact::ContactSubsystem>() != nullptr;
+    }
+
     void
     MembraneSubsystem::compute_reactions(const LA::Vector      &u,
                                          std::array<double, 3> &reaction,
@@ -918,6 +925,10 @@ namespace pneuma
       assembler->assemble(u, model.kinematic_constraints(), request);
       for (const auto *terms : cell_terms)
         terms->add_loads(u, model.kinematic_constraints(), residual, ext);
+      // With contact, cables also press on held membrane dofs: the whole
+      // residual there is the support's force.
+      if (needs_support_residual())
+        residual = model.support_residual();
       reaction.fill(0.);
       applied.fill(0.);
       const auto &constraints = model.constraints();

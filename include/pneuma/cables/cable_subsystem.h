@@ -89,6 +89,9 @@ namespace pneuma
       load_checkpoint(const Checkpoint &checkpoint, LA::Vector &field) override;
       double
       force_scale(const LA::Vector &field) const override;
+      /// With contact: the end reactions need every subsystem's forces.
+      bool
+      needs_support_residual() const override;
       void
       add_statistics(Statistics       &statistics,
                      const LA::Vector &field) const override;

@@ -186,9 +186,17 @@ namespace pneuma
       void
       load_checkpoint(const Checkpoint &checkpoint);
 
-      /// Reports of every cable at @p u (valid on rank 0).
+      /**
+       * Reports of every cable at @p u (valid on rank 0). The end reactions
+       * are the cable's own nodal forces less the dead end forces, or,
+       * given @p support (Model::support_residual), the whole residual at
+       * the held end dofs, which includes contact forces on the end
+       * elements.
+       */
       std::vector<CableReport>
-      reports(const double t, const LA::Vector &u) const;
+      reports(const double      t,
+              const LA::Vector &u,
+              const LA::Vector *support = nullptr) const;
 
       /// Write cables_<k>_<step>.vtu and the cables.pvd record (rank 0).
       void

@@ -46,7 +46,7 @@ namespace pneuma
     {
       unsigned int active_points = 0, points = 0;
       /// Integral of the contact line load N along the cable [N], and the
-      /// resultant force on the cable [N].
+      /// resultant force on the cable [N] (normal and friction forces).
       double                total_force = 0.;
       std::array<double, 3> force{{0., 0., 0.}};
       /// Largest penetration -xi3 [m] (0 if none).
@@ -95,12 +95,14 @@ namespace pneuma
 
       /// Add the penalty forces (to r = f_int - f_ext) and their tangent at
       /// @p u (ghosted); compresses what it touched. Keeps the point data
-      /// for reports() and the output fields.
+      /// for reports() and the output fields, unless @p probe (an assembly
+      /// for a report, which leaves them as they were).
       void
       assemble(const LA::Vector                &u,
                const AffineConstraints<double> &constraints,
                LA::SparseMatrix                *tangent,
-               LA::Vector                      *residual);
+               LA::Vector                      *residual,
+               const bool                       probe = false);
 
       /// Accept the friction state of the last assembly (the converged
       /// one): stick anchors stay, slipping ones move.
@@ -114,11 +116,18 @@ namespace pneuma
       void
       load_checkpoint(const Checkpoint &checkpoint);
 
-      /// Reports of the last assembly, one per pair (same on every rank).
+      /**
+       * Reports of the accepted state, one per pair (same on every rank):
+       * those of the assembly that commit_step() accepted, made with the
+       * anchors of the step before, so that a point that slipped in the
+       * step counts as slipping (assembled again with the moved anchors it
+       * would sit on its cone and count as sticking); before the first
+       * commit, those of the last assembly.
+       */
       const std::vector<ContactReport> &
       reports() const
       {
-        return last_reports;
+        return committed_reports.empty() ? last_reports : committed_reports;
       }
 
       /// Contact line load (N, positive in compression) averaged over each
@@ -187,7 +196,7 @@ namespace pneuma
       std::vector<PairData>           pairs;
       /// Couplings (pair, cable cell, master) in the sparsity pattern.
       std::set<std::array<unsigned int, 3>> coupled;
-      std::vector<ContactReport>            last_reports;
+      std::vector<ContactReport>            last_reports, committed_reports;
       /// Contact force per master cell of the last assembly.
       std::vector<double> master_force;
     };

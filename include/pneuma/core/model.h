@@ -238,6 +238,19 @@ namespace pneuma
     /// the converged @p state.
     void
     refresh(const solvers::BorderedVector &state);
+    /**
+     * The residual f_int - f_ext of every subsystem at the reported state
+     * with only the kinematic constraints condensed: at a held dof it is
+     * the force the support exerts, whichever subsystems load that dof
+     * (a cable end takes its element's force and the contact forces on
+     * it). Valid during add_statistics() when a subsystem asked for it
+     * (Subsystem::needs_support_residual).
+     */
+    const LA::Vector &
+    support_residual() const
+    {
+      return support_forces;
+    }
     /// Statistics of every subsystem at @p state (call reduce() after).
     void
     add_statistics(Statistics                    &statistics,
@@ -407,9 +420,11 @@ namespace pneuma
     dealii::IndexSet                  owned, relevant;
     dealii::AffineConstraints<double> kinematic, update_constraints;
     /// Some rank has kinematic constraints (the same on every rank).
-    bool                    any_kinematic = false;
-    LA::SparseMatrix        tangent, laplacian;
-    LA::Vector              external, ghosted;
+    bool             any_kinematic = false;
+    LA::SparseMatrix tangent, laplacian;
+    LA::Vector       external, ghosted;
+    /// support_residual() of the last add_statistics().
+    LA::Vector              support_forces;
     solvers::BorderCoupling coupling;
     /// Border blocks of assemble_residual(), thrown away.
     solvers::BorderCoupling scratch_coupling;

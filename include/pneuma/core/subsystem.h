@@ -67,6 +67,9 @@ namespace pneuma
     /// Residual rows of the border (scaled) and its Jacobian blocks.
     dealii::Vector<double>  *border_residual = nullptr;
     solvers::BorderCoupling *coupling        = nullptr;
+    /// An assembly for a report (Model::support_residual): subsystems keep
+    /// the state their assembly records (contact points, friction anchors).
+    bool probe = false;
   };
 
   /// A contiguous range [first, first + size) of global unknowns.
@@ -351,6 +354,13 @@ namespace pneuma
       (void)field;
     }
     // ---- reporting
+    /// True if add_statistics() reads Model::support_residual() (it costs
+    /// one residual assembly of every subsystem per report).
+    virtual bool
+    needs_support_residual() const
+    {
+      return false;
+    }
     /// Add named values with units at the converged state @p field.
     virtual void
     add_statistics(Statistics &statistics, const LA::Vector &field) const

@@ -139,6 +139,9 @@ namespace pneuma
       assemble(const Assembly &a) override;
       std::string
       check_state(const LA::Vector &field) const override;
+      /// With contact: the reactions take the cables' forces on held dofs.
+      bool
+      needs_support_residual() const override;
       void
       add_statistics(Statistics       &statistics,
                      const LA::Vector &field) const override;
