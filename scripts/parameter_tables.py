@@ -86,7 +86,9 @@ def rows(tree, path=()):
                     ("Sometimes it is convenient", "The formula that",
                      "The names of the variables")):
                 doc = PARSED_FUNCTION[key]
-            yield (entry, value["default_value"],
+            # The value set at declaration (a function's own default
+            # expression), not deal.II's generic default.
+            yield (entry, value.get("value", value["default_value"]),
                    allowed(value.get("pattern_description", "")), doc)
         elif isinstance(value, dict):
             yield from rows(value, path + (template_name(key),))

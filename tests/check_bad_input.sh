@@ -94,6 +94,7 @@ check "$dir/valid.prm"              1 "unknown option" --bogus
 check "$dir/valid.prm"              0 "finished"
 k="$dir/cable_valid.prm"
 check "$k" 0 "finished"
+check "$k" 1 "Cables/Cable 1/Prestress factor: stages a Prestress force, which is not given" --set "Cables/Cable 1/Prestress factor/Function expression=t"
 check "$dir/valid.prm" 1 "Geometry/Type: the scene has nothing to solve" --set "Geometry/Type=none"
 check "$k" 1 "Cables/Cable 1: is not used: Cables/Number of cables is 0" --set "Cables/Number of cables=0"
 check "$k" 1 "Cables/Cable 3: is not used: Cables/Number of cables is 1" --set "Cables/Cable 3/Density=1"

@@ -51,6 +51,7 @@ namespace pneuma
       , end_force(std::make_unique<Functions::ParsedFunction<3>>(3))
       , distributed_load(std::make_unique<Functions::ParsedFunction<3>>(3))
       , end_moment(std::make_unique<Functions::ParsedFunction<3>>(3))
+      , prestress_factor(std::make_unique<Functions::ParsedFunction<3>>(1))
     {
     }
 
@@ -152,7 +153,9 @@ namespace pneuma
           prm.add_parameter("Prestress force",
                             s.prestress_force,
                             "Axial force [N] in the reference shape: the "
-                            "unstressed length is L/(1 + F/EA).",
+                            "unstressed length is L/(1 + F/EA). Staged by "
+                            "the Prestress factor f(t): L/(1 + f F/EA), a "
+                            "cable shortened (a turnbuckle) as t goes on.",
                             Patterns::Double(0.));
           prm.add_parameter("Unstressed length",
                             s.unstressed_length,
@@ -193,6 +196,7 @@ namespace pneuma
           // reference position and t; active unless all zero.
           loads::declare_function(prm, "Distributed load", 3, "0; 0; 0");
           loads::declare_function(prm, "End moment", 3, "0; 0; 0");
+          loads::declare_function(prm, "Prestress factor", 1, "1");
           s.elements = elements.declare_all(prm);
           s.shapes   = shapes.declare_all(prm);
           prm.leave_subsection();
@@ -291,6 +295,18 @@ namespace pneuma
           prm.leave_subsection();
           loads::parse_function(
             prm, *d.end_moment, "End moment", path + "/End moment", true);
+          loads::parse_function(prm,
+                                *d.prestress_factor,
+                                "Prestress factor",
+                                path + "/Prestress factor",
+                                true);
+          prm.enter_subsection("Prestress factor");
+          d.staged_prestress =
+            Utilities::trim(prm.get("Function expression")) != "1";
+          prm.leave_subsection();
+          check_input(!d.staged_prestress || d.prestress_force > 0.,
+                      path + "/Prestress factor",
+                      "stages a Prestress force, which is not given");
           prm.enter_subsection("End moment");
           d.has_end_moment =
             !is_zero_expression(prm.get("Function expression"));

@@ -201,7 +201,7 @@ namespace pneuma
             b->reference_length += cell->diameter();
           const double EA = d.youngs_modulus * d.area();
           if (d.prestress_force > 0.)
-            b->rho = 1. + d.prestress_force / EA;
+            b->rho = 1. + staged_prestress(d, 0.) / EA;
           else if (d.unstressed_length > 0.)
             b->rho = b->reference_length / d.unstressed_length;
           element.setup(d, b->rho);
@@ -466,6 +466,7 @@ namespace pneuma
                           LA::Vector                      *residual,
                           LA::Vector                      *external) const
     {
+      stage_prestress(t);
       if (is_owner)
         for (const auto &b : bodies)
           {
@@ -736,11 +737,38 @@ namespace pneuma
         "cables/pvd");
     }
 
+    double
+    CableSystem::staged_prestress(const CableDefinition &d, const double t)
+    {
+      if (!d.staged_prestress)
+        return d.prestress_force;
+      d.prestress_factor->set_time(t);
+      return d.prestress_force * d.prestress_factor->value(Point<3>());
+    }
+
+    void
+    CableSystem::stage_prestress(const double t) const
+    {
+      for (const auto &b : bodies)
+        if (b->definition.staged_prestress)
+          {
+            const double EA =
+              b->definition.youngs_modulus * b->definition.area();
+            const double rho = 1. + staged_prestress(b->definition, t) / EA;
+            if (rho != b->rho)
+              {
+                b->rho = rho;
+                b->element.set_length_ratio(rho);
+              }
+          }
+    }
+
     std::vector<CableReport>
     CableSystem::reports(const double      t,
                          const LA::Vector &u,
                          const LA::Vector *support) const
     {
+      stage_prestress(t);
       std::vector<CableReport> result;
       if (!is_owner)
         return result;

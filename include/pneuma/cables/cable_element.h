@@ -148,6 +148,11 @@ namespace pneuma
       virtual void
       setup(const CableDefinition &cable, const double length_ratio) = 0;
 
+      /// A new rho (a staged prestress, CableDefinition::prestress_factor)
+      /// after setup(), keeping every other state.
+      virtual void
+      set_length_ratio(const double length_ratio) = 0;
+
       /**
        * Reference values of the components 3.. at @p node into @p values
        * (n_components() entries; 0-2 hold the position). Does nothing for

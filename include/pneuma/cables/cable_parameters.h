@@ -71,6 +71,10 @@ namespace pneuma
       /// Prestress: the axial force in the reference shape [N], or the
       /// unstressed length [m] (0: not given).
       double prestress_force = 0., unstressed_length = 0.;
+      /// Prestress as a load stage: the Prestress force times this factor
+      /// f(t) (default 1), e.g. a cable tensioned after inflation.
+      std::unique_ptr<Functions::ParsedFunction<3>> prestress_factor;
+      bool                                          staged_prestress = false;
 
       /// Supports of the ends, and the position components they hold (x,
       /// y, z).

@@ -198,6 +198,11 @@ namespace pneuma
               const LA::Vector &u,
               const LA::Vector *support = nullptr) const;
 
+      /// The prestress force of @p d at pseudo time @p t (its Prestress
+      /// factor f(t) times the Prestress force).
+      static double
+      staged_prestress(const CableDefinition &d, const double t);
+
       /// Write cables_<k>_<step>.vtu and the cables.pvd record (rank 0).
       void
       write_output(const std::string &directory,
@@ -206,6 +211,9 @@ namespace pneuma
                    const LA::Vector  &u);
 
     private:
+      /// rho = 1 + f(t) F/EA of every cable with a staged prestress.
+      void
+      stage_prestress(const double t) const;
       struct Body;
 
       /// Per-cell element terms in the local numbering of body @p b.

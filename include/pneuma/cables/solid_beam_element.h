@@ -42,6 +42,13 @@ namespace pneuma
       SolidBeamElement(const BeamMaterial &material, const double length_ratio);
       ~SolidBeamElement();
 
+      /// A new reference over unstressed length (a staged prestress).
+      void
+      set_length_ratio(const double length_ratio)
+      {
+        rho = length_ratio;
+      }
+
       /**
        * Internal forces and tangent of one cell. @p fe_values is reinit'ed
        * on the cell; @p tangent is the unit reference tangent of the cell;

@@ -74,8 +74,16 @@ namespace pneuma
         void
         setup(const CableDefinition &cable, const double length_ratio) override
         {
-          law = std::make_unique<TensionOnlyCable>(
-            cable.youngs_modulus * cable.area(), length_ratio, slack_ratio);
+          EA = cable.youngs_modulus * cable.area();
+          law =
+            std::make_unique<TensionOnlyCable>(EA, length_ratio, slack_ratio);
+        }
+
+        void
+        set_length_ratio(const double length_ratio) override
+        {
+          law =
+            std::make_unique<TensionOnlyCable>(EA, length_ratio, slack_ratio);
         }
 
         void
@@ -122,7 +130,9 @@ namespace pneuma
         }
 
       private:
-        double                            slack_ratio = 1e-6;
+        double slack_ratio = 1e-6;
+        /// The axial stiffness of setup().
+        double                            EA = 0.;
         std::unique_ptr<TensionOnlyCable> law;
       };
     } // namespace

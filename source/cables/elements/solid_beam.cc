@@ -123,6 +123,12 @@ namespace pneuma
         }
 
         void
+        set_length_ratio(const double length_ratio) override
+        {
+          element->set_length_ratio(length_ratio);
+        }
+
+        void
         reference_values(const CableNode  &node,
                          ArrayView<double> values) const override
         {
