@@ -45,13 +45,13 @@ namespace pneuma
     } // namespace
 
     CableDefinition::CableDefinition()
-      : start_displacement(std::make_unique<Functions::ParsedFunction<3>>(3))
+      : prestress_factor(std::make_unique<Functions::ParsedFunction<3>>(1))
+      , start_displacement(std::make_unique<Functions::ParsedFunction<3>>(3))
       , end_displacement(std::make_unique<Functions::ParsedFunction<3>>(3))
       , start_force(std::make_unique<Functions::ParsedFunction<3>>(3))
       , end_force(std::make_unique<Functions::ParsedFunction<3>>(3))
       , distributed_load(std::make_unique<Functions::ParsedFunction<3>>(3))
       , end_moment(std::make_unique<Functions::ParsedFunction<3>>(3))
-      , prestress_factor(std::make_unique<Functions::ParsedFunction<3>>(1))
     {
     }
 
