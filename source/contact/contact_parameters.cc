@@ -55,6 +55,19 @@ namespace pneuma
                         "The side of the membrane the cable is on: "
                         "outside = where the outward normal "
                         "(Geometry/Orientation) points.");
+          add_selection(
+            prm,
+            "Master normal",
+            p.smoothed_normal,
+            {{"smoothed", true}, {"facet", false}},
+            "The normal along which the gap is measured. smoothed: "
+            "interpolated from nodal normals (the average of the unit "
+            "normals of the pair's cells at each node), continuous across "
+            "cell edges, so that a cable lying on a mesh line or across "
+            "the edges of flat Q1 facets is pushed along the averaged "
+            "normal (its tangent includes the nodal normals' dependence "
+            "on the neighbouring cells); facet: each cell's own normal "
+            "and closest point (cheaper; the normal jumps at cell edges).");
           prm.add_parameter("Radius",
                             p.radius,
                             "Cable radius R in the gap [m] (0: the larger "

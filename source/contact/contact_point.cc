@@ -160,6 +160,121 @@ namespace pneuma
           }
         return g - sqrt(p1 * p1 + p2 * p2);
       }
+
+      /**
+       * The smoothed normal field at (xi, g): the surface point rho, the
+       * unit normal n = N/|N| with N = sum phi_a nbar_a, its derivatives
+       * n_a = (I - n n) N_a / |N|, the offset tangents
+       * t_a = rho_a + g n_a and the dual basis: dual[0], dual[1] = m^1,
+       * m^2 and dual[2] = m (doc/theory.md §10.4).
+       */
+      template <typename Number>
+      struct SmoothFrame
+      {
+        Number rho[3], n[3], dn[2][3], dual[3][3], length;
+      };
+
+      template <typename Number>
+      void
+      smooth_frame(const unsigned int                        degree,
+                   const std::vector<std::array<Number, 3>> &y,
+                   const std::vector<std::array<Number, 3>> &nbar,
+                   const Number                              xi[2],
+                   const Number                             &g,
+                   SmoothFrame<Number>                      &f)
+      {
+        Number d[2][3], dd[2][2][3];
+        surface(degree, y, xi, f.rho, d, dd);
+        Number N[3], dN[2][3], ddN[2][2][3];
+        surface(degree, nbar, xi, N, dN, ddN);
+        using std::sqrt;
+        f.length = sqrt(N[0] * N[0] + N[1] * N[1] + N[2] * N[2]);
+        for (unsigned int c = 0; c < 3; ++c)
+          f.n[c] = N[c] / f.length;
+        Number t[2][3];
+        for (unsigned int a = 0; a < 2; ++a)
+          {
+            const Number nd =
+              f.n[0] * dN[a][0] + f.n[1] * dN[a][1] + f.n[2] * dN[a][2];
+            for (unsigned int c = 0; c < 3; ++c)
+              {
+                f.dn[a][c] = (dN[a][c] - f.n[c] * nd) / f.length;
+                t[a][c]    = d[a][c] + g * f.dn[a][c];
+              }
+          }
+        const auto cross =
+          [](const Number u[3], const Number v[3], Number w[3]) {
+            w[0] = u[1] * v[2] - u[2] * v[1];
+            w[1] = u[2] * v[0] - u[0] * v[2];
+            w[2] = u[0] * v[1] - u[1] * v[0];
+          };
+        cross(t[0], t[1], f.dual[2]);
+        cross(t[1], f.n, f.dual[0]);
+        cross(f.n, t[0], f.dual[1]);
+        const Number det =
+          f.dual[2][0] * f.n[0] + f.dual[2][1] * f.n[1] + f.dual[2][2] * f.n[2];
+        for (unsigned int k = 0; k < 3; ++k)
+          for (unsigned int c = 0; c < 3; ++c)
+            f.dual[k][c] /= det;
+      }
+
+      /// One Newton step of x - rho(xi) - g n(xi) = 0 on (xi, g).
+      template <typename Number>
+      void
+      smooth_newton_step(const unsigned int                        degree,
+                         const std::vector<std::array<Number, 3>> &y,
+                         const std::vector<std::array<Number, 3>> &nbar,
+                         const Number                              x[3],
+                         Number                                    xi[2],
+                         Number                                   &g)
+      {
+        SmoothFrame<Number> f;
+        smooth_frame(degree, y, nbar, xi, g, f);
+        Number F[3];
+        for (unsigned int c = 0; c < 3; ++c)
+          F[c] = x[c] - f.rho[c] - g * f.n[c];
+        Number step[3];
+        for (unsigned int k = 0; k < 3; ++k)
+          step[k] =
+            f.dual[k][0] * F[0] + f.dual[k][1] * F[1] + f.dual[k][2] * F[2];
+        xi[0] += step[0];
+        xi[1] += step[1];
+        g += step[2];
+      }
+
+      /// The patch's nodes and (smoothed) nodal normals as doubles.
+      void
+      patch_arrays(const MasterPatch                  &patch,
+                   std::vector<std::array<double, 3>> &y,
+                   std::vector<std::array<double, 3>> &nbar)
+      {
+        y.resize(patch.nodes.size());
+        nbar.resize(patch.normals.size());
+        for (unsigned int a = 0; a < y.size(); ++a)
+          for (unsigned int c = 0; c < 3; ++c)
+            y[a][c] = patch.nodes[a][c];
+        for (unsigned int a = 0; a < nbar.size(); ++a)
+          for (unsigned int c = 0; c < 3; ++c)
+            nbar[a][c] = patch.normals[a][c];
+      }
+
+      /// Distance g along the smoothed normal of the converged projection
+      /// xi: x - rho(xi) is parallel to n(xi) there.
+      double
+      smooth_distance(const MasterPatch &patch,
+                      const double       x[3],
+                      const Point<2>    &xi_converged)
+      {
+        std::vector<std::array<double, 3>> y, nbar;
+        patch_arrays(patch, y, nbar);
+        const double        xi[2] = {xi_converged[0], xi_converged[1]};
+        SmoothFrame<double> f;
+        smooth_frame(patch.degree, y, nbar, xi, 0., f);
+        double g = 0.;
+        for (unsigned int c = 0; c < 3; ++c)
+          g += (x[c] - f.rho[c]) * f.n[c];
+        return g;
+      }
     } // namespace
 
     Tensor<1, 3>
@@ -202,6 +317,45 @@ namespace pneuma
       double       xi[2] = {xi_start[0], xi_start[1]};
       Projection   p;
       bool         converged = false;
+      const double tolerance = 1e-9;
+      if (!patch.normals.empty())
+        {
+          // Along the smoothed normal: x = rho(xi) + g n(xi).
+          std::vector<std::array<double, 3>> nbar;
+          patch_arrays(patch, y, nbar);
+          double g     = smooth_distance(patch, xs, xi_start);
+          double scale = 0.;
+          for (const auto &a : y)
+            for (unsigned int c = 0; c < 3; ++c)
+              scale = std::max(scale, std::abs(a[c] - y[0][c]));
+          for (unsigned int k = 0; k < 30; ++k)
+            {
+              const double old[3] = {xi[0], xi[1], g};
+              smooth_newton_step(patch.degree, y, nbar, xs, xi, g);
+              if (!std::isfinite(xi[0]) || !std::isfinite(xi[1])
+                  || !std::isfinite(g))
+                return p;
+              if (std::abs(xi[0] - 0.5) > 3. || std::abs(xi[1] - 0.5) > 3.)
+                return p;
+              if (std::abs(xi[0] - old[0]) + std::abs(xi[1] - old[1])
+                    + std::abs(g - old[2]) / std::max(scale, 1e-300)
+                  < 1e-13)
+                {
+                  converged = true;
+                  break;
+                }
+            }
+          SmoothFrame<double> f;
+          smooth_frame(patch.degree, y, nbar, xi, g, f);
+          p.xi     = Point<2>(xi[0], xi[1]);
+          p.inside = converged && xi[0] >= -tolerance && xi[0] <= 1. + tolerance
+                     && xi[1] >= -tolerance && xi[1] <= 1. + tolerance;
+          p.gap      = g - radius;
+          p.distance = std::abs(g);
+          for (unsigned int c = 0; c < 3; ++c)
+            p.normal[c] = f.n[c];
+          return p;
+        }
       for (unsigned int k = 0; k < 30; ++k)
         {
           const double old[2] = {xi[0], xi[1]};
@@ -217,8 +371,7 @@ namespace pneuma
               break;
             }
         }
-      const double tolerance = 1e-9;
-      p.xi                   = Point<2>(xi[0], xi[1]);
+      p.xi     = Point<2>(xi[0], xi[1]);
       p.inside = converged && xi[0] >= -tolerance && xi[0] <= 1. + tolerance
                  && xi[1] >= -tolerance && xi[1] <= 1. + tolerance;
       double normal[3];
@@ -380,6 +533,118 @@ namespace pneuma
       }
     } // namespace
 
+    namespace
+    {
+      /**
+       * The penalty force along the smoothed normal field. Variables:
+       * slave (6), with a section a1, a2 at both nodes (12), the master
+       * nodes, the nodal normals. The force w N n(xi), N = -eps (g - h),
+       * acts on the cable point (and on the section's extreme point
+       * towards the master) and -w N n on the master at rho(xi), along the
+       * continuous normal: not the gradient of an energy (that would be
+       * dg/dx_s = m, the normal of the kinked offset surface). Its
+       * Jacobian, non-symmetric, by first-order Sacado numbers through two
+       * Newton steps of the projection.
+       */
+      template <int n>
+      double
+      penalty_terms_smoothed(const MasterPatch                 &patch,
+                             const SlaveSection                *section,
+                             const std::array<Tensor<1, 3>, 2> &slave,
+                             const double                       eta,
+                             const double                       radius,
+                             const double                       penalty,
+                             const double                       weight,
+                             const Point<2>                    &xi_converged,
+                             Vector<double>                    *gradient,
+                             FullMatrix<double>                *hessian)
+      {
+        using AD                  = Sacado::Fad::SFad<double, n>;
+        const unsigned int n_m    = patch.nodes.size();
+        const unsigned int m0     = section ? 18 : 6; // first master variable
+        const unsigned int n0     = m0 + 3 * n_m;     // first normal variable
+        const unsigned int n_used = n0 + 3 * n_m;
+        AD                 x[3], a1[3], a2[3];
+        for (unsigned int c = 0; c < 3; ++c)
+          x[c] = (1. - eta) * AD(n, c, slave[0][c])
+                 + eta * AD(n, 3 + c, slave[1][c]);
+        if (section)
+          for (unsigned int c = 0; c < 3; ++c)
+            {
+              a1[c] = (1. - eta) * AD(n, 6 + c, section->a1[0][c])
+                      + eta * AD(n, 12 + c, section->a1[1][c]);
+              a2[c] = (1. - eta) * AD(n, 9 + c, section->a2[0][c])
+                      + eta * AD(n, 15 + c, section->a2[1][c]);
+            }
+        std::vector<std::array<AD, 3>> y(n_m), nbar(n_m);
+        for (unsigned int a = 0; a < n_m; ++a)
+          for (unsigned int c = 0; c < 3; ++c)
+            {
+              y[a][c]    = AD(n, m0 + 3 * a + c, patch.nodes[a][c]);
+              nbar[a][c] = AD(n, n0 + 3 * a + c, patch.normals[a][c]);
+            }
+        const double xs[3] = {x[0].val(), x[1].val(), x[2].val()};
+        AD           xi[2] = {AD(xi_converged[0]), AD(xi_converged[1])};
+        AD           g(smooth_distance(patch, xs, xi_converged));
+        smooth_newton_step(patch.degree, y, nbar, x, xi, g);
+        smooth_newton_step(patch.degree, y, nbar, x, xi, g);
+        SmoothFrame<AD> f;
+        smooth_frame(patch.degree, y, nbar, xi, g, f);
+        using std::sqrt;
+        AD p1 = 0., p2 = 0., h = radius;
+        if (section)
+          {
+            for (unsigned int c = 0; c < 3; ++c)
+              {
+                p1 += a1[c] * f.n[c];
+                p2 += a2[c] * f.n[c];
+              }
+            h = sqrt(p1 * p1 + p2 * p2);
+          }
+        const AD gap = g - h;
+        if (gradient)
+          gradient->reinit(n_used);
+        if (hessian)
+          hessian->reinit(n_used, n_used);
+        if (gap.val() >= 0.)
+          return 0.;
+        AD l1[3], dl1[3], ddl1[3], l2[3], dl2[3], ddl2[3];
+        lagrange(patch.degree, xi[0], l1, dl1, ddl1);
+        lagrange(patch.degree, xi[1], l2, dl2, ddl2);
+        const unsigned int k = patch.degree + 1;
+        // The contact force w N n on the cable (and its section) and
+        // -w N n on the master at rho(xi): residual r = f_int - f_ext.
+        const AD        wN = -weight * penalty * gap; // w N >= 0
+        std::vector<AD> r(n_used, AD(0.));
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            r[c]     = -(1. - eta) * wN * f.n[c];
+            r[3 + c] = -eta * wN * f.n[c];
+            if (section)
+              {
+                // The section's extreme point towards the master,
+                // x_s - (p1 a1 + p2 a2)/h, takes the force too.
+                r[6 + c]  = (1. - eta) * wN * p1 / h * f.n[c];
+                r[9 + c]  = (1. - eta) * wN * p2 / h * f.n[c];
+                r[12 + c] = eta * wN * p1 / h * f.n[c];
+                r[15 + c] = eta * wN * p2 / h * f.n[c];
+              }
+          }
+        for (unsigned int a = 0; a < n_m; ++a)
+          for (unsigned int c = 0; c < 3; ++c)
+            r[m0 + 3 * a + c] = wN * l1[a % k] * l2[a / k] * f.n[c];
+        for (unsigned int i = 0; i < n_used; ++i)
+          {
+            if (gradient)
+              (*gradient)(i) = r[i].val();
+            if (hessian)
+              for (unsigned int j = 0; j < n_used; ++j)
+                (*hessian)(i, j) = r[i].dx(j);
+          }
+        return 0.5 * weight * penalty * gap.val() * gap.val();
+      }
+    } // namespace
+
     double
     penalty_terms(const MasterPatch                 &patch,
                   const std::array<Tensor<1, 3>, 2> &slave,
@@ -392,6 +657,24 @@ namespace pneuma
                   FullMatrix<double>                *hessian,
                   const SlaveSection                *section)
     {
+      if (!patch.normals.empty())
+        {
+#define PNEUMA_SMOOTHED(n)            \
+  penalty_terms_smoothed<n>(patch,    \
+                            section,  \
+                            slave,    \
+                            eta,      \
+                            radius,   \
+                            penalty,  \
+                            weight,   \
+                            xi,       \
+                            gradient, \
+                            hessian)
+          if (patch.degree == 1)
+            return section ? PNEUMA_SMOOTHED(42) : PNEUMA_SMOOTHED(30);
+          return section ? PNEUMA_SMOOTHED(72) : PNEUMA_SMOOTHED(60);
+#undef PNEUMA_SMOOTHED
+        }
       if (section)
         return patch.degree == 1 ? penalty_terms_section<30>(patch,
                                                              *section,
@@ -435,10 +718,9 @@ namespace pneuma
                      Vector<double>                    *residual,
                      FullMatrix<double>                *jacobian)
       {
-        using AD                  = Sacado::Fad::SFad<double, n>;
-        const unsigned int n_m    = patch.nodes.size();
-        const unsigned int m0     = section ? 18 : 6; // first master variable
-        const unsigned int n_used = m0 + 3 * n_m;
+        using AD               = Sacado::Fad::SFad<double, n>;
+        const unsigned int n_m = patch.nodes.size();
+        const unsigned int m0  = section ? 18 : 6; // first master variable
         AD                 x[3], a1[3], a2[3];
         for (unsigned int c = 0; c < 3; ++c)
           x[c] = (1. - eta) * AD(n, c, slave[0][c])
@@ -451,24 +733,53 @@ namespace pneuma
               a2[c] = (1. - eta) * AD(n, 9 + c, section->a2[0][c])
                       + eta * AD(n, 15 + c, section->a2[1][c]);
             }
-        std::vector<std::array<AD, 3>> y(n_m);
+        const bool                     smoothed = !patch.normals.empty();
+        const unsigned int             n_used   = m0 + (smoothed ? 6 : 3) * n_m;
+        std::vector<std::array<AD, 3>> y(n_m), nbar(smoothed ? n_m : 0);
         for (unsigned int a = 0; a < n_m; ++a)
           for (unsigned int c = 0; c < 3; ++c)
             y[a][c] = AD(n, m0 + 3 * a + c, patch.nodes[a][c]);
+        for (unsigned int a = 0; a < nbar.size(); ++a)
+          for (unsigned int c = 0; c < 3; ++c)
+            nbar[a][c] = AD(n, m0 + 3 * n_m + 3 * a + c, patch.normals[a][c]);
         const auto &z     = y;
         AD          xi[2] = {AD(xi_converged[0]), AD(xi_converged[1])};
-        newton_step(patch.degree, y, x, xi);
-        newton_step(patch.degree, y, x, xi);
-        AD            normal[3];
-        const AD      g = gap(patch.degree,
-                         y,
-                         x,
-                         xi,
-                         patch.sign,
-                         radius,
-                         normal,
-                         section ? a1 : nullptr,
-                         section ? a2 : nullptr);
+        AD          normal[3], g;
+        if (smoothed)
+          {
+            const double xs[3] = {x[0].val(), x[1].val(), x[2].val()};
+            AD           distance(smooth_distance(patch, xs, xi_converged));
+            smooth_newton_step(patch.degree, y, nbar, x, xi, distance);
+            smooth_newton_step(patch.degree, y, nbar, x, xi, distance);
+            SmoothFrame<AD> f;
+            smooth_frame(patch.degree, y, nbar, xi, distance, f);
+            AD p1 = 0., p2 = 0.;
+            for (unsigned int c = 0; c < 3; ++c)
+              {
+                normal[c] = f.n[c];
+                if (section)
+                  {
+                    p1 += a1[c] * f.n[c];
+                    p2 += a2[c] * f.n[c];
+                  }
+              }
+            using std::sqrt;
+            g = distance - (section ? sqrt(p1 * p1 + p2 * p2) : AD(radius));
+          }
+        else
+          {
+            newton_step(patch.degree, y, x, xi);
+            newton_step(patch.degree, y, x, xi);
+            g = gap(patch.degree,
+                    y,
+                    x,
+                    xi,
+                    patch.sign,
+                    radius,
+                    normal,
+                    section ? a1 : nullptr,
+                    section ? a2 : nullptr);
+          }
         FrictionState state;
         if (residual)
           residual->reinit(n_used);
@@ -571,6 +882,12 @@ namespace pneuma
                     xi,                 \
                     residual,           \
                     jacobian)
+      if (!patch.normals.empty())
+        {
+          if (patch.degree == 1)
+            return section ? PNEUMA_FRICTION(42) : PNEUMA_FRICTION(30);
+          return section ? PNEUMA_FRICTION(72) : PNEUMA_FRICTION(60);
+        }
       if (patch.degree == 1)
         return section ? PNEUMA_FRICTION(30) : PNEUMA_FRICTION(18);
       return section ? PNEUMA_FRICTION(45) : PNEUMA_FRICTION(33);

@@ -46,51 +46,59 @@ namespace pneuma
           regions.insert(p.regions.begin(), p.regions.end());
         }
       std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
+      const auto                           make_master = [&](const auto &cell) {
+        MasterCell m;
+        m.cell     = cell;
+        m.material = cell->material_id();
+        m.dofs.resize(3 * n * n);
+        m.reference.resize(n * n);
+        cell->get_dof_indices(cell_dofs);
+        for (unsigned int k = 0; k < fe.n_dofs_per_cell(); ++k)
+          {
+            const auto [c, base] = fe.system_to_component_index(k);
+            const Point<2>     xi = fe.base_element(0).unit_support_point(base);
+            const unsigned int a =
+              std::lround(xi[0] * degree) + n * std::lround(xi[1] * degree);
+            m.dofs[3 * a + c] = cell_dofs[k];
+          }
+        for (unsigned int j = 0; j < n; ++j)
+          for (unsigned int i = 0; i < n; ++i)
+            m.reference[i + n * j] = mapping.transform_unit_to_real_cell(
+              cell, Point<2>(double(i) / degree, double(j) / degree));
+        // Outward sign and area of the patch at its centre.
+        const Point<3> x =
+          mapping.transform_unit_to_real_cell(cell, Point<2>(0.5, 0.5));
+        // rho_1 x rho_2 at the centre from the lattice.
+        Tensor<1, 3> d1, d2;
+        if (degree == 1)
+          {
+            d1 = 0.5
+                 * (m.reference[1] - m.reference[0] + m.reference[3]
+                    - m.reference[2]);
+            d2 = 0.5
+                 * (m.reference[2] - m.reference[0] + m.reference[3]
+                    - m.reference[1]);
+          }
+        else
+          {
+            d1 = m.reference[5] - m.reference[3];
+            d2 = m.reference[7] - m.reference[1];
+          }
+        const Tensor<1, 3> normal = cross_product_3d(d1, d2);
+        m.outward = geometry.orientation(x, normal);
+        m.area    = normal.norm();
+        return m;
+      };
+      // Owned and ghost cells of the pairs' regions: the owned ones are
+      // the masters, all of them give the nodal normals.
+      std::vector<MasterCell> neighbourhood;
       for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned()
+        if (!cell->is_artificial()
             && (all_regions || regions.count(cell->material_id())))
           {
-            MasterCell m;
-            m.cell     = cell;
-            m.material = cell->material_id();
-            m.dofs.resize(3 * n * n);
-            m.reference.resize(n * n);
-            cell->get_dof_indices(cell_dofs);
-            for (unsigned int k = 0; k < fe.n_dofs_per_cell(); ++k)
-              {
-                const auto [c, base] = fe.system_to_component_index(k);
-                const Point<2> xi = fe.base_element(0).unit_support_point(base);
-                const unsigned int a =
-                  std::lround(xi[0] * degree) + n * std::lround(xi[1] * degree);
-                m.dofs[3 * a + c] = cell_dofs[k];
-              }
-            for (unsigned int j = 0; j < n; ++j)
-              for (unsigned int i = 0; i < n; ++i)
-                m.reference[i + n * j] = mapping.transform_unit_to_real_cell(
-                  cell, Point<2>(double(i) / degree, double(j) / degree));
-            // Outward sign and area of the patch at its centre.
-            const Point<3> x =
-              mapping.transform_unit_to_real_cell(cell, Point<2>(0.5, 0.5));
-            // rho_1 x rho_2 at the centre from the lattice.
-            Tensor<1, 3> d1, d2;
-            if (degree == 1)
-              {
-                d1 = 0.5
-                     * (m.reference[1] - m.reference[0] + m.reference[3]
-                        - m.reference[2]);
-                d2 = 0.5
-                     * (m.reference[2] - m.reference[0] + m.reference[3]
-                        - m.reference[1]);
-              }
-            else
-              {
-                d1 = m.reference[5] - m.reference[3];
-                d2 = m.reference[7] - m.reference[1];
-              }
-            const Tensor<1, 3> normal = cross_product_3d(d1, d2);
-            m.outward                 = geometry.orientation(x, normal);
-            m.area                    = normal.norm();
-            masters.push_back(m);
+            neighbourhood.push_back(make_master(cell));
+            if (cell->is_locally_owned())
+              masters.push_back(neighbourhood.back());
           }
 
       // Cable points.
@@ -135,6 +143,16 @@ namespace pneuma
               d.cell_reference.push_back(X);
               ++index;
             }
+          d.smoothed = p.smoothed_normal;
+          if (d.smoothed)
+            {
+              std::vector<NormalCell> cells;
+              for (const auto &m : neighbourhood)
+                if (p.regions.empty() || p.regions.count(m.material))
+                  cells.push_back(
+                    {m.dofs, m.reference, p.outside ? m.outward : -m.outward});
+              d.normals.reinit(degree, cells);
+            }
           d.radius = p.radius > 0. ? p.radius : v.radius;
           d.search =
             p.search_distance > 0. ? p.search_distance : d.radius + h_max;
@@ -164,7 +182,8 @@ namespace pneuma
     MasterPatch
     ContactSystem::patch(const MasterCell &m,
                          const bool        outside,
-                         const LA::Vector *u) const
+                         const LA::Vector *u,
+                         NodalNormals     *normals) const
     {
       MasterPatch patch;
       patch.degree = degree;
@@ -174,7 +193,54 @@ namespace pneuma
           for (unsigned int c = 0; c < 3; ++c)
             patch.nodes[a][c] += (*u)[m.dofs[3 * a + c]];
       patch.sign = outside ? m.outward : -m.outward;
+      if (normals && u)
+        for (unsigned int a = 0; a < patch.nodes.size(); ++a)
+          patch.normals.push_back(normals->normal(m.dofs[3 * a], *u));
       return patch;
+    }
+
+    void
+    ContactSystem::variable_map(
+      const PairData                                        &d,
+      const unsigned int                                     cable_cell,
+      const MasterCell                                      &m,
+      const LA::Vector                                      *u,
+      std::vector<types::global_dof_index>                  &dofs,
+      std::vector<std::vector<std::pair<unsigned, double>>> *rows) const
+    {
+      const auto &slave = d.cell_dofs[cable_cell];
+      dofs.assign(slave.begin(), slave.end());
+      dofs.insert(dofs.end(), m.dofs.begin(), m.dofs.end());
+      if (!d.smoothed)
+        return;
+      const unsigned int n_nodes = m.reference.size();
+      // Position of a dof in the list (appended if new).
+      const auto position = [&](const types::global_dof_index i) {
+        for (unsigned int j = slave.size(); j < dofs.size(); ++j)
+          if (dofs[j] == i)
+            return j;
+        dofs.push_back(i);
+        return static_cast<unsigned int>(dofs.size() - 1);
+      };
+      std::vector<std::vector<unsigned int>> node_positions(n_nodes);
+      for (unsigned int a = 0; a < n_nodes; ++a)
+        for (const auto i : d.normals.dependencies(m.dofs[3 * a]))
+          node_positions[a].push_back(position(i));
+      if (!rows)
+        return;
+      const unsigned int n_direct = slave.size() + m.dofs.size();
+      rows->assign(n_direct + 3 * n_nodes, {});
+      for (unsigned int v = 0; v < n_direct; ++v)
+        (*rows)[v].emplace_back(v, 1.);
+      for (unsigned int a = 0; a < n_nodes; ++a)
+        {
+          const FullMatrix<double> &J = d.normals.jacobian(m.dofs[3 * a], *u);
+          for (unsigned int c = 0; c < 3; ++c)
+            for (unsigned int j = 0; j < J.n(); ++j)
+              if (J(c, j) != 0.)
+                (*rows)[n_direct + 3 * a + c].emplace_back(node_positions[a][j],
+                                                           J(c, j));
+        }
     }
 
     bool
@@ -237,11 +303,7 @@ namespace pneuma
       std::vector<types::global_dof_index> dofs;
       for (const auto &[k, c, m] : coupled)
         {
-          dofs.assign(pairs[k].cell_dofs[c].begin(),
-                      pairs[k].cell_dofs[c].end());
-          dofs.insert(dofs.end(),
-                      masters[m].dofs.begin(),
-                      masters[m].dofs.end());
+          variable_map(pairs[k], c, masters[m], nullptr, dofs, nullptr);
           constraints.add_entries_local_to_global(dofs, dsp, false);
         }
     }
@@ -277,6 +339,7 @@ namespace pneuma
           PairData          &d        = pairs[k];
           const ContactPair &p        = parameters.all()[k];
           const unsigned int n_points = d.points.size();
+          d.normals.clear_cache();
           // Nearest projection inside a candidate cell, per point, here.
           struct Best
           {
@@ -314,7 +377,10 @@ namespace pneuma
             [&](const unsigned int m) -> const MasterPatch & {
             if (!have_patch[m])
               {
-                patches[m]    = patch(masters[m], p.outside, &u);
+                patches[m]    = patch(masters[m],
+                                   p.outside,
+                                   &u,
+                                   d.smoothed ? &d.normals : nullptr);
                 boxes[m]      = bounding_box(patches[m]);
                 have_patch[m] = true;
               }
@@ -369,6 +435,44 @@ namespace pneuma
           Vector<double>                       gradient;
           FullMatrix<double>                   hessian;
           std::vector<types::global_dof_index> dofs;
+          // Smoothed normals: the chain from the variables to the dofs
+          // (P, rows per variable) and the chained local terms: the
+          // force P^T r and its Jacobian P^T A P (r has no rows for the
+          // nodal normals: they are not unknowns, only their columns
+          // chain to the node positions they come from).
+          std::vector<std::vector<std::pair<unsigned, double>>> rows;
+          Vector<double>                                        chained;
+          FullMatrix<double>                                    chained_matrix;
+          const auto distribute_chained = [&](const Vector<double>     &g,
+                                              const FullMatrix<double> &A) {
+            if (!d.smoothed)
+              {
+                LA::distribute(constraints, A, g, dofs, tangent, residual);
+                return;
+              }
+            const unsigned int n_t = dofs.size(), n_v = rows.size();
+            chained.reinit(n_t);
+            for (unsigned int v = 0; v < n_v; ++v)
+              for (const auto &[j, w] : rows[v])
+                chained(j) += w * g(v);
+            if (tangent)
+              {
+                // P^T A P with the sparse rows of P.
+                FullMatrix<double> AP(n_v, n_t);
+                for (unsigned int i = 0; i < n_v; ++i)
+                  for (unsigned int v = 0; v < n_v; ++v)
+                    if (const double a = A(i, v); a != 0.)
+                      for (const auto &[j, w] : rows[v])
+                        AP(i, j) += a * w;
+                chained_matrix.reinit(n_t, n_t);
+                for (unsigned int i = 0; i < n_v; ++i)
+                  for (const auto &[j1, w] : rows[i])
+                    for (unsigned int j2 = 0; j2 < n_t; ++j2)
+                      chained_matrix(j1, j2) += w * AP(i, j2);
+              }
+            LA::distribute(
+              constraints, chained_matrix, chained, dofs, tangent, residual);
+          };
           for (unsigned int q = 0; q < n_points; ++q)
             {
               if (global[q].rank != rank
@@ -401,19 +505,20 @@ namespace pneuma
                             &gradient,
                             tangent ? &hessian : nullptr,
                             d.beam ? &sections[pt.cable_cell] : nullptr);
-              dofs.assign(d.cell_dofs[pt.cable_cell].begin(),
-                          d.cell_dofs[pt.cable_cell].end());
-              dofs.insert(dofs.end(),
-                          masters[m].dofs.begin(),
-                          masters[m].dofs.end());
-              LA::distribute(
-                constraints, hessian, gradient, dofs, tangent, residual);
+              variable_map(d,
+                           pt.cable_cell,
+                           masters[m],
+                           &u,
+                           dofs,
+                           d.smoothed ? &rows : nullptr);
+              distribute_chained(gradient, hessian);
               const double N = -p.penalty * gap; // >= 0
               d.line_load[q] = N;
               ++report.active_points;
               report.total_force += N * pt.weight;
+              // The force on the cable, -(r_0 + r_1) = N w n.
               for (unsigned int i = 0; i < 3; ++i)
-                report.force[i] += N * pt.weight * proj.normal[i];
+                report.force[i] -= gradient(i) + gradient(3 + i);
               report.max_penetration = std::max(report.max_penetration, -gap);
               master_force[m] += N * pt.weight;
 
@@ -449,12 +554,7 @@ namespace pneuma
                                    &f_residual,
                                    tangent ? &f_jacobian : nullptr,
                                    d.beam ? &sections[pt.cable_cell] : nullptr);
-                  LA::distribute(constraints,
-                                 f_jacobian,
-                                 f_residual,
-                                 dofs,
-                                 tangent,
-                                 residual);
+                  distribute_chained(f_residual, f_jacobian);
                   report.friction_force += fs.traction.norm() * pt.weight;
                   // The resultant on the cable takes the friction too.
                   for (unsigned int i = 0; i < 3; ++i)

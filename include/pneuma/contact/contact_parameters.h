@@ -57,6 +57,10 @@ namespace pneuma
       /// Entries "Friction coefficient" mu and "Tangential penalty" eps_T
       /// [N/m^2]; a tangential penalty of 0 in the input is eps_N.
       double friction = 0., tangential_penalty = 0.;
+      /// Entry "Master normal": true (smoothed) for the normal field
+      /// interpolated from nodal-averaged normals, continuous across cell
+      /// edges; false (facet) for each cell's own normal.
+      bool smoothed_normal = false;
     };
 
     /// The "Contact" subsection.

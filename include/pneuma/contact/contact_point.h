@@ -55,6 +55,17 @@ namespace pneuma
       std::vector<Tensor<1, 3>> nodes;
       /// +1 or -1: turns rho_1 x rho_2 towards the contact side.
       double sign = 1.;
+      /**
+       * Smoothed normal field (empty: the facet normal): unit nodal
+       * normals nbar_a in lattice order, already turned to the contact
+       * side. The gap is then measured along
+       * \f$n(\xi) = N/|N|,\ N = \sum_a \phi_a(\xi)\,\bar n_a\f$:
+       * the projection solves \f$x_s = \rho(\xi) + g\,n(\xi)\f$ for
+       * (xi, g), and the nodal normals are variables of the contact terms
+       * (after the master nodes), to be chained to the node positions they
+       * come from (NodalNormals).
+       */
+      std::vector<Tensor<1, 3>> normals;
     };
 
     /**
@@ -100,7 +111,18 @@ namespace pneuma
      * Penalty energy of one point and, if requested, its gradient and
      * Hessian. Variables: slave node 0 (xyz), slave node 1 (xyz), with a
      * @p section its a1, a2 at node 0 and at node 1 (12), then the master
-     * nodes (xyz each, lattice order). @p xi is the converged projection.
+     * nodes (xyz each, lattice order), then with a smoothed normal field
+     * the nodal normals (xyz each, lattice order). @p xi is the converged
+     * projection.
+     *
+     * Smoothed normals: with F = x_s - rho(xi) - g n(xi) = 0, the tangents
+     * t_a = rho_a + g n_a of the offset surface and the dual basis
+     * m^1, m^2, m (m^a.t_b = delta_ab, m^a.n = 0, m.t_a = 0, m.n = 1), a
+     * variation of the variables at fixed (xi, g), dF, moves the solution
+     * by dg = m.dF, dxi^a = m^a.dF. The gradient of
+     * Pi = w eps_N/2 (g - h(n))^2 is formed from these in closed form and
+     * its Jacobian (the Hessian) by first-order Sacado numbers through two
+     * Newton steps of the projection.
      */
     double
     penalty_terms(const MasterPatch                 &patch,

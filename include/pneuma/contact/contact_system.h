@@ -16,6 +16,15 @@
  * reduction per assembly), which makes the answer unique at cell edges and
  * partition boundaries. The rank owning the winning cell assembles the
  * point's penalty force and exact tangent.
+ *
+ * With a smoothed master normal (the default) the patches carry the
+ * nodal-averaged normals of their nodes (NodalNormals, from the owned and
+ * ghost cells of the pair's regions), and the terms of a point reach the
+ * nodes those normals depend on: its local matrix is chained from the
+ * variables (slave, cell nodes, nodal normals) to the dofs (slave, the
+ * cell's nodes and the nodes on the lattice lines through them in the
+ * neighbouring cells). The force of a smoothed point acts along the
+ * continuous normal, so its tangent is not symmetric (the LU is chosen).
  */
 
 #include <deal.II/base/index_set.h>
@@ -28,6 +37,7 @@
 #include <pneuma/cables/cable_system.h>
 #include <pneuma/contact/contact_parameters.h>
 #include <pneuma/contact/contact_point.h>
+#include <pneuma/contact/nodal_normals.h>
 #include <pneuma/core/linear_algebra.h>
 #include <pneuma/geometry/scene_generator.h>
 
@@ -175,6 +185,10 @@ namespace pneuma
         std::vector<std::vector<unsigned int>> candidates;
         /// Per point of the last assembly: line load N (>= 0), or 0.
         std::vector<double> line_load;
+        /// Smoothed master normal: the nodal normals of the pair's cells
+        /// (mutable: a cache of the current configuration's values).
+        bool                 smoothed = false;
+        mutable NodalNormals normals;
         /// Friction: per point the stick anchor (local master, -1: none)
         /// and its convective coordinates, and what the last assembly
         /// would make of it.
@@ -183,9 +197,30 @@ namespace pneuma
       };
 
       /// The current patch of master @p m, its normal turned to the side
-      /// @p outside (u = nullptr: the reference).
+      /// @p outside (u = nullptr: the reference); with @p normals (and u)
+      /// it carries the nodal normals.
       MasterPatch
-      patch(const MasterCell &m, const bool outside, const LA::Vector *u) const;
+      patch(const MasterCell &m,
+            const bool        outside,
+            const LA::Vector *u,
+            NodalNormals     *normals = nullptr) const;
+
+      /**
+       * The map from the variables of a point's contact terms on master
+       * @p m of pair @p d (slave, cell nodes and, smoothed, nodal normals)
+       * to dofs: @p dofs gets the slave's, the cell's and, smoothed, the
+       * further dofs the nodal normals depend on; @p rows (if given) per
+       * variable the dofs (positions in @p dofs) and weights it moves,
+       * the nodal normals' rows from their jacobian at @p u.
+       */
+      void
+      variable_map(
+        const PairData                                        &d,
+        const unsigned int                                     cable_cell,
+        const MasterCell                                      &m,
+        const LA::Vector                                      *u,
+        std::vector<types::global_dof_index>                  &dofs,
+        std::vector<std::vector<std::pair<unsigned, double>>> *rows) const;
 
       const ContactParameters        &parameters;
       const geometry::SceneGenerator &geometry;
