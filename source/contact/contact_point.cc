@@ -536,6 +536,100 @@ namespace pneuma
     namespace
     {
       /**
+       * The Sacado variables of one point (slave, with a section a1, a2
+       * at both nodes, master nodes, with a smoothed field the nodal
+       * normals) and its projection taken in them from the converged
+       * xi: two Newton steps of the closest point (facet) or of
+       * x = rho + g n (smoothed), then the gap g - h along the normal.
+       */
+      template <int n>
+      struct PointVariables
+      {
+        using AD = Sacado::Fad::SFad<double, n>;
+        AD                             x[3], a1[3], a2[3];
+        std::vector<std::array<AD, 3>> y, nbar;
+        /// First master variable; variables in use.
+        unsigned int m0 = 0, n_used = 0;
+        /// Projection, gap and normal; smoothed with a section also the
+        /// section's extent h = sqrt(p1^2 + p2^2), p_i = a_i . n.
+        AD xi[2], gap, normal[3], p1, p2, h;
+
+        PointVariables(const MasterPatch                 &patch,
+                       const SlaveSection                *section,
+                       const std::array<Tensor<1, 3>, 2> &slave,
+                       const double                       eta,
+                       const double                       radius,
+                       const Point<2>                    &xi_converged)
+        {
+          const unsigned int n_m      = patch.nodes.size();
+          const bool         smoothed = !patch.normals.empty();
+          m0                          = section ? 18 : 6;
+          n_used                      = m0 + (smoothed ? 6 : 3) * n_m;
+          for (unsigned int c = 0; c < 3; ++c)
+            x[c] = (1. - eta) * AD(n, c, slave[0][c])
+                   + eta * AD(n, 3 + c, slave[1][c]);
+          if (section)
+            for (unsigned int c = 0; c < 3; ++c)
+              {
+                a1[c] = (1. - eta) * AD(n, 6 + c, section->a1[0][c])
+                        + eta * AD(n, 12 + c, section->a1[1][c]);
+                a2[c] = (1. - eta) * AD(n, 9 + c, section->a2[0][c])
+                        + eta * AD(n, 15 + c, section->a2[1][c]);
+              }
+          y.resize(n_m);
+          nbar.resize(smoothed ? n_m : 0);
+          for (unsigned int a = 0; a < n_m; ++a)
+            for (unsigned int c = 0; c < 3; ++c)
+              y[a][c] = AD(n, m0 + 3 * a + c, patch.nodes[a][c]);
+          for (unsigned int a = 0; a < nbar.size(); ++a)
+            for (unsigned int c = 0; c < 3; ++c)
+              nbar[a][c] = AD(n, m0 + 3 * n_m + 3 * a + c, patch.normals[a][c]);
+          xi[0] = xi_converged[0];
+          xi[1] = xi_converged[1];
+          if (!smoothed)
+            {
+              newton_step(patch.degree, y, x, xi);
+              newton_step(patch.degree, y, x, xi);
+              gap = contact::gap(patch.degree,
+                                 y,
+                                 x,
+                                 xi,
+                                 patch.sign,
+                                 radius,
+                                 normal,
+                                 section ? a1 : nullptr,
+                                 section ? a2 : nullptr);
+              return;
+            }
+          const double xs[3] = {x[0].val(), x[1].val(), x[2].val()};
+          AD           g(smooth_distance(patch, xs, xi_converged));
+          smooth_newton_step(patch.degree, y, nbar, x, xi, g);
+          smooth_newton_step(patch.degree, y, nbar, x, xi, g);
+          SmoothFrame<AD> f;
+          smooth_frame(patch.degree, y, nbar, xi, g, f);
+          p1 = 0.;
+          p2 = 0.;
+          h  = radius;
+          for (unsigned int c = 0; c < 3; ++c)
+            {
+              normal[c] = f.n[c];
+              if (section)
+                {
+                  p1 += a1[c] * f.n[c];
+                  p2 += a2[c] * f.n[c];
+                }
+            }
+          using std::sqrt;
+          if (section)
+            h = sqrt(p1 * p1 + p2 * p2);
+          gap = g - h;
+        }
+      };
+    } // namespace
+
+    namespace
+    {
+      /**
        * The penalty force along the smoothed normal field. Variables:
        * slave (6), with a section a1, a2 at both nodes (12), the master
        * nodes, the nodal normals. The force w N n(xi), N = -eps (g - h),
@@ -559,49 +653,13 @@ namespace pneuma
                              Vector<double>                    *gradient,
                              FullMatrix<double>                *hessian)
       {
-        using AD                  = Sacado::Fad::SFad<double, n>;
-        const unsigned int n_m    = patch.nodes.size();
-        const unsigned int m0     = section ? 18 : 6; // first master variable
-        const unsigned int n0     = m0 + 3 * n_m;     // first normal variable
-        const unsigned int n_used = n0 + 3 * n_m;
-        AD                 x[3], a1[3], a2[3];
-        for (unsigned int c = 0; c < 3; ++c)
-          x[c] = (1. - eta) * AD(n, c, slave[0][c])
-                 + eta * AD(n, 3 + c, slave[1][c]);
-        if (section)
-          for (unsigned int c = 0; c < 3; ++c)
-            {
-              a1[c] = (1. - eta) * AD(n, 6 + c, section->a1[0][c])
-                      + eta * AD(n, 12 + c, section->a1[1][c]);
-              a2[c] = (1. - eta) * AD(n, 9 + c, section->a2[0][c])
-                      + eta * AD(n, 15 + c, section->a2[1][c]);
-            }
-        std::vector<std::array<AD, 3>> y(n_m), nbar(n_m);
-        for (unsigned int a = 0; a < n_m; ++a)
-          for (unsigned int c = 0; c < 3; ++c)
-            {
-              y[a][c]    = AD(n, m0 + 3 * a + c, patch.nodes[a][c]);
-              nbar[a][c] = AD(n, n0 + 3 * a + c, patch.normals[a][c]);
-            }
-        const double xs[3] = {x[0].val(), x[1].val(), x[2].val()};
-        AD           xi[2] = {AD(xi_converged[0]), AD(xi_converged[1])};
-        AD           g(smooth_distance(patch, xs, xi_converged));
-        smooth_newton_step(patch.degree, y, nbar, x, xi, g);
-        smooth_newton_step(patch.degree, y, nbar, x, xi, g);
-        SmoothFrame<AD> f;
-        smooth_frame(patch.degree, y, nbar, xi, g, f);
-        using std::sqrt;
-        AD p1 = 0., p2 = 0., h = radius;
-        if (section)
-          {
-            for (unsigned int c = 0; c < 3; ++c)
-              {
-                p1 += a1[c] * f.n[c];
-                p2 += a2[c] * f.n[c];
-              }
-            h = sqrt(p1 * p1 + p2 * p2);
-          }
-        const AD gap = g - h;
+        using AD = Sacado::Fad::SFad<double, n>;
+        const PointVariables<n> v(
+          patch, section, slave, eta, radius, xi_converged);
+        const unsigned int n_m = patch.nodes.size(), m0 = v.m0,
+                           n_used = v.n_used;
+        const AD &gap = v.gap, &p1 = v.p1, &p2 = v.p2, &h = v.h;
+        const AD *normal = v.normal;
         if (gradient)
           gradient->reinit(n_used);
         if (hessian)
@@ -609,8 +667,8 @@ namespace pneuma
         if (gap.val() >= 0.)
           return 0.;
         AD l1[3], dl1[3], ddl1[3], l2[3], dl2[3], ddl2[3];
-        lagrange(patch.degree, xi[0], l1, dl1, ddl1);
-        lagrange(patch.degree, xi[1], l2, dl2, ddl2);
+        lagrange(patch.degree, v.xi[0], l1, dl1, ddl1);
+        lagrange(patch.degree, v.xi[1], l2, dl2, ddl2);
         const unsigned int k = patch.degree + 1;
         // The contact force w N n on the cable (and its section) and
         // -w N n on the master at rho(xi): residual r = f_int - f_ext.
@@ -618,21 +676,21 @@ namespace pneuma
         std::vector<AD> r(n_used, AD(0.));
         for (unsigned int c = 0; c < 3; ++c)
           {
-            r[c]     = -(1. - eta) * wN * f.n[c];
-            r[3 + c] = -eta * wN * f.n[c];
+            r[c]     = -(1. - eta) * wN * normal[c];
+            r[3 + c] = -eta * wN * normal[c];
             if (section)
               {
                 // The section's extreme point towards the master,
                 // x_s - (p1 a1 + p2 a2)/h, takes the force too.
-                r[6 + c]  = (1. - eta) * wN * p1 / h * f.n[c];
-                r[9 + c]  = (1. - eta) * wN * p2 / h * f.n[c];
-                r[12 + c] = eta * wN * p1 / h * f.n[c];
-                r[15 + c] = eta * wN * p2 / h * f.n[c];
+                r[6 + c]  = (1. - eta) * wN * p1 / h * normal[c];
+                r[9 + c]  = (1. - eta) * wN * p2 / h * normal[c];
+                r[12 + c] = eta * wN * p1 / h * normal[c];
+                r[15 + c] = eta * wN * p2 / h * normal[c];
               }
           }
         for (unsigned int a = 0; a < n_m; ++a)
           for (unsigned int c = 0; c < 3; ++c)
-            r[m0 + 3 * a + c] = wN * l1[a % k] * l2[a / k] * f.n[c];
+            r[m0 + 3 * a + c] = wN * l1[a % k] * l2[a / k] * normal[c];
         for (unsigned int i = 0; i < n_used; ++i)
           {
             if (gradient)
@@ -718,68 +776,13 @@ namespace pneuma
                      Vector<double>                    *residual,
                      FullMatrix<double>                *jacobian)
       {
-        using AD               = Sacado::Fad::SFad<double, n>;
-        const unsigned int n_m = patch.nodes.size();
-        const unsigned int m0  = section ? 18 : 6; // first master variable
-        AD                 x[3], a1[3], a2[3];
-        for (unsigned int c = 0; c < 3; ++c)
-          x[c] = (1. - eta) * AD(n, c, slave[0][c])
-                 + eta * AD(n, 3 + c, slave[1][c]);
-        if (section)
-          for (unsigned int c = 0; c < 3; ++c)
-            {
-              a1[c] = (1. - eta) * AD(n, 6 + c, section->a1[0][c])
-                      + eta * AD(n, 12 + c, section->a1[1][c]);
-              a2[c] = (1. - eta) * AD(n, 9 + c, section->a2[0][c])
-                      + eta * AD(n, 15 + c, section->a2[1][c]);
-            }
-        const bool                     smoothed = !patch.normals.empty();
-        const unsigned int             n_used   = m0 + (smoothed ? 6 : 3) * n_m;
-        std::vector<std::array<AD, 3>> y(n_m), nbar(smoothed ? n_m : 0);
-        for (unsigned int a = 0; a < n_m; ++a)
-          for (unsigned int c = 0; c < 3; ++c)
-            y[a][c] = AD(n, m0 + 3 * a + c, patch.nodes[a][c]);
-        for (unsigned int a = 0; a < nbar.size(); ++a)
-          for (unsigned int c = 0; c < 3; ++c)
-            nbar[a][c] = AD(n, m0 + 3 * n_m + 3 * a + c, patch.normals[a][c]);
-        const auto &z     = y;
-        AD          xi[2] = {AD(xi_converged[0]), AD(xi_converged[1])};
-        AD          normal[3], g;
-        if (smoothed)
-          {
-            const double xs[3] = {x[0].val(), x[1].val(), x[2].val()};
-            AD           distance(smooth_distance(patch, xs, xi_converged));
-            smooth_newton_step(patch.degree, y, nbar, x, xi, distance);
-            smooth_newton_step(patch.degree, y, nbar, x, xi, distance);
-            SmoothFrame<AD> f;
-            smooth_frame(patch.degree, y, nbar, xi, distance, f);
-            AD p1 = 0., p2 = 0.;
-            for (unsigned int c = 0; c < 3; ++c)
-              {
-                normal[c] = f.n[c];
-                if (section)
-                  {
-                    p1 += a1[c] * f.n[c];
-                    p2 += a2[c] * f.n[c];
-                  }
-              }
-            using std::sqrt;
-            g = distance - (section ? sqrt(p1 * p1 + p2 * p2) : AD(radius));
-          }
-        else
-          {
-            newton_step(patch.degree, y, x, xi);
-            newton_step(patch.degree, y, x, xi);
-            g = gap(patch.degree,
-                    y,
-                    x,
-                    xi,
-                    patch.sign,
-                    radius,
-                    normal,
-                    section ? a1 : nullptr,
-                    section ? a2 : nullptr);
-          }
+        using AD = Sacado::Fad::SFad<double, n>;
+        const PointVariables<n> v(
+          patch, section, slave, eta, radius, xi_converged);
+        const unsigned int n_m = patch.nodes.size(), m0 = v.m0,
+                           n_used = v.n_used;
+        const AD     &g = v.gap, *normal = v.normal, *x = v.x, *xi = v.xi;
+        const auto   &z = v.y;
         FrictionState state;
         if (residual)
           residual->reinit(n_used);
