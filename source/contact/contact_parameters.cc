@@ -95,6 +95,16 @@ namespace pneuma
                             "load step) are contact candidates [m] (0: R "
                             "plus one cable element length).",
                             Patterns::Double(0.));
+          prm.add_parameter(
+            "Maximum motion per step",
+            p.max_motion,
+            "A converged load step is rejected and cut back if a cable "
+            "point that was near the membrane at the step's start moved "
+            "relative to the material point it faced by more than this "
+            "fraction of the search distance (the step's candidate cells "
+            "may no longer hold it), or if a point penetrates a cell that "
+            "was not among its candidates (0: only the second test).",
+            Patterns::Double(0., 1.));
           prm.add_parameter("Friction coefficient",
                             p.friction,
                             "Coulomb friction mu (0: frictionless). The "

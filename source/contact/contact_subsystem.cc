@@ -114,6 +114,13 @@ namespace pneuma
         *a.field, *a.constraints, a.tangent, a.residual, a.probe);
     }
 
+    std::string
+    ContactSubsystem::check_state(const LA::Vector &field) const
+    {
+      TimerOutput::Scope t(model.timer(), "contact search");
+      return contact->check_step(field);
+    }
+
     void
     ContactSubsystem::save_checkpoint(Checkpoint &checkpoint,
                                       const LA::Vector &) const

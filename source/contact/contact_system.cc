@@ -6,8 +6,11 @@
 #include <pneuma/core/checkpoint.h>
 #include <pneuma/core/input_error.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <sstream>
 
 namespace pneuma
 {
@@ -162,6 +165,9 @@ namespace pneuma
           d.pending_anchor.assign(d.points.size(), -1);
           d.anchor_xi.assign(d.points.size(), Point<2>());
           d.pending_xi.assign(d.points.size(), Point<2>());
+          d.seen_master.assign(d.points.size(), -1);
+          d.seen_xi.assign(d.points.size(), Point<2>());
+          d.seen_offset.assign(d.points.size(), Tensor<1, 3>());
           pairs.push_back(d);
         }
       last_reports.assign(pairs.size(), ContactReport());
@@ -318,9 +324,10 @@ namespace pneuma
       // A probe leaves the recorded point data as it was.
       struct Record
       {
-        std::vector<double>   line_load;
-        std::vector<int>      pending_anchor;
-        std::vector<Point<2>> pending_xi;
+        std::vector<double>       line_load;
+        std::vector<int>          pending_anchor, seen_master;
+        std::vector<Point<2>>     pending_xi, seen_xi;
+        std::vector<Tensor<1, 3>> seen_offset;
       };
       std::vector<Record>        saved;
       std::vector<ContactReport> saved_reports;
@@ -328,7 +335,12 @@ namespace pneuma
       if (probe)
         {
           for (const auto &d : pairs)
-            saved.push_back({d.line_load, d.pending_anchor, d.pending_xi});
+            saved.push_back({d.line_load,
+                             d.pending_anchor,
+                             d.seen_master,
+                             d.pending_xi,
+                             d.seen_xi,
+                             d.seen_offset});
           saved_reports      = last_reports;
           saved_master_force = master_force;
         }
@@ -430,6 +442,7 @@ namespace pneuma
           report.points = n_points;
           std::fill(d.line_load.begin(), d.line_load.end(), 0.);
           std::fill(d.pending_anchor.begin(), d.pending_anchor.end(), -1);
+          std::fill(d.seen_master.begin(), d.seen_master.end(), -1);
           Vector<double>                       f_residual;
           FullMatrix<double>                   f_jacobian;
           Vector<double>                       gradient;
@@ -492,6 +505,15 @@ namespace pneuma
                     (1. - pt.eta) * sc.a2[0] + pt.eta * sc.a2[1];
                   gap +=
                     d.radius - std::hypot(a1 * proj.normal, a2 * proj.normal);
+                }
+              if (gap < d.search)
+                {
+                  // Near: the reference of the next step's check.
+                  d.seen_master[q] = m;
+                  d.seen_xi[q]     = proj.xi;
+                  d.seen_offset[q] = (1. - pt.eta) * slave[pt.cable_cell][0]
+                                     + pt.eta * slave[pt.cable_cell][1]
+                                     - position(patches[m], proj.xi);
                 }
               if (gap >= 0.)
                 continue;
@@ -614,6 +636,9 @@ namespace pneuma
               pairs[k].line_load      = std::move(saved[k].line_load);
               pairs[k].pending_anchor = std::move(saved[k].pending_anchor);
               pairs[k].pending_xi     = std::move(saved[k].pending_xi);
+              pairs[k].seen_master    = std::move(saved[k].seen_master);
+              pairs[k].seen_xi        = std::move(saved[k].seen_xi);
+              pairs[k].seen_offset    = std::move(saved[k].seen_offset);
             }
           last_reports = std::move(saved_reports);
           master_force = std::move(saved_master_force);
@@ -626,9 +651,100 @@ namespace pneuma
       committed_reports = last_reports;
       for (auto &d : pairs)
         {
-          d.anchor    = d.pending_anchor;
-          d.anchor_xi = d.pending_xi;
+          d.anchor       = d.pending_anchor;
+          d.anchor_xi    = d.pending_xi;
+          d.start_master = d.seen_master;
+          d.start_xi     = d.seen_xi;
+          d.start_offset = d.seen_offset;
         }
+    }
+
+    std::string
+    ContactSystem::check_step(const LA::Vector &u) const
+    {
+      for (unsigned int k = 0; k < pairs.size(); ++k)
+        {
+          const PairData                          &d = pairs[k];
+          const ContactPair                       &p = parameters.all()[k];
+          std::vector<std::array<Tensor<1, 3>, 2>> slave(d.cell_dofs.size());
+          for (unsigned int c = 0; c < d.cell_dofs.size(); ++c)
+            for (unsigned int v = 0; v < 2; ++v)
+              for (unsigned int i = 0; i < 3; ++i)
+                slave[c][v][i] =
+                  d.cell_reference[c][v][i] + u[d.cell_dofs[c][3 * v + i]];
+          const auto point = [&](const CablePoint &pt) {
+            return (1. - pt.eta) * slave[pt.cable_cell][0]
+                   + pt.eta * slave[pt.cable_cell][1];
+          };
+          std::map<unsigned int, MasterPatch> patches;
+          const auto current = [&](const unsigned int m) -> const auto &
+          {
+            auto it = patches.find(m);
+            if (it == patches.end())
+              it = patches.emplace(m, patch(masters[m], p.outside, &u)).first;
+            return it->second;
+          };
+          // 1. Motion relative to the master of the points near it at the
+          // step's start.
+          double moved = 0.;
+          if (p.max_motion > 0.)
+            for (unsigned int q = 0; q < d.start_master.size(); ++q)
+              if (d.start_master[q] >= 0)
+                {
+                  const Tensor<1, 3> offset =
+                    point(d.points[q])
+                    - position(current(d.start_master[q]), d.start_xi[q]);
+                  moved = std::max(moved, (offset - d.start_offset[q]).norm());
+                }
+          // 2. Penetration of cells outside the step's candidates.
+          std::vector<std::vector<unsigned int>> cell_points(
+            d.cell_dofs.size());
+          for (unsigned int q = 0; q < d.points.size(); ++q)
+            cell_points[d.points[q].cable_cell].push_back(q);
+          unsigned int missed = 0;
+          const double reach  = d.radius + d.search;
+          for (unsigned int m = 0; m < masters.size(); ++m)
+            {
+              if (!p.regions.empty() && !p.regions.count(masters[m].material))
+                continue;
+              const auto box = bounding_box(current(m));
+              for (unsigned int c = 0; c < d.cell_dofs.size(); ++c)
+                {
+                  const auto &cand = d.candidates[c];
+                  bool        near = true;
+                  for (unsigned int i = 0; i < 3 && near; ++i)
+                    near = std::min(slave[c][0][i], slave[c][1][i]) - reach
+                             <= box.second[i]
+                           && std::max(slave[c][0][i], slave[c][1][i]) + reach
+                                >= box.first[i];
+                  if (!near
+                      || std::find(cand.begin(), cand.end(), m) != cand.end())
+                    continue;
+                  for (const unsigned int q : cell_points[c])
+                    {
+                      const Projection proj =
+                        project(current(m), point(d.points[q]), d.radius);
+                      if (proj.inside && proj.gap < 0.)
+                        ++missed;
+                    }
+                }
+            }
+          moved  = Utilities::MPI::max(moved, comm);
+          missed = Utilities::MPI::sum(missed, comm);
+          std::ostringstream why;
+          if (p.max_motion > 0. && moved > p.max_motion * d.search)
+            why << p.path << ": a cable point moved " << moved
+                << " m relative to the membrane in the step, more than "
+                << p.max_motion << " of the search distance " << d.search
+                << " m (Maximum motion per step)";
+          else if (missed > 0)
+            why << p.path << ": " << missed
+                << " cable point(s) penetrate membrane cells that were not "
+                   "contact candidates in the step";
+          if (!why.str().empty())
+            return why.str();
+        }
+      return "";
     }
 
     void

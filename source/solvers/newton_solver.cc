@@ -28,6 +28,10 @@ namespace pneuma
       /// Inexact Newton forcing: eta = min(max_forcing, forcing_ratio
       /// |r|/|r_ref|).
       constexpr double max_forcing = 1e-3, forcing_ratio = 1e-2;
+      /// The watchdog does not take a full step that raises |r| more than
+      /// this factor: such a state (a residual of 1e78 from a contact
+      /// point thrown through the membrane) is no iterate to go on from.
+      constexpr double max_watched_growth = 1e6;
 
       /// The continuation schedule (doc/theory.md "Newton").
       struct ContinuationSchedule
@@ -62,11 +66,13 @@ namespace pneuma
         {
         }
 
-        /// May the rejected full step @p trial_norm be taken anyway?
+        /// May the rejected full step @p trial_norm from |r| = @p r_norm
+        /// be taken anyway? Never if it is not finite or absurd.
         bool
-        may_take(const double trial_norm) const
+        may_take(const double trial_norm, const double r_norm) const
         {
-          return steps > 0 && !barred && std::isfinite(trial_norm);
+          return steps > 0 && !barred && std::isfinite(trial_norm)
+                 && trial_norm <= max_watched_growth * r_norm;
         }
 
         /// Take it: save the state unless a watch is already on.
@@ -164,7 +170,9 @@ namespace pneuma
                         "and the iteration goes on for up to this many "
                         "steps; if |r| has not dropped below its value "
                         "before, that state is restored and the line "
-                        "search backtracks from it (0: backtrack at once).",
+                        "search backtracks from it (0: backtrack at once). "
+                        "A step to a non-finite residual or one raising it "
+                        "more than 1e6-fold is never taken.",
                         Patterns::Integer(0, 20));
       prm.add_parameter("Regularisation factor",
                         shift_factor,
@@ -328,7 +336,7 @@ namespace pneuma
                   step.accepted = true;
                   break;
                 }
-              if (ls == 0 && watchdog.may_take(step.norm))
+              if (ls == 0 && watchdog.may_take(step.norm, r_norm))
                 {
                   watchdog.start(u, r_norm);
                   step.accepted = step.watched = true;

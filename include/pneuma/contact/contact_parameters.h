@@ -54,6 +54,10 @@ namespace pneuma
       /// Entry "Search distance": extra distance for the candidate search
       /// [m] (0: R + one cable element length).
       double search_distance = 0.;
+      /// Entry "Maximum motion per step": a converged step in which a point
+      /// near the master moved relative to it by more than this fraction
+      /// of the search distance is cut back (0: no limit).
+      double max_motion = 0.5;
       /// Entries "Friction coefficient" mu and "Tangential penalty" eps_T
       /// [N/m^2]; a tangential penalty of 0 in the input is eps_N.
       double friction = 0., tangential_penalty = 0.;

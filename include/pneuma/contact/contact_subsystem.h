@@ -55,6 +55,8 @@ namespace pneuma
       begin_step(const double t, const LA::Vector &field, bool &grown) override;
       void
       assemble(const Assembly &a) override;
+      std::string
+      check_state(const LA::Vector &field) const override;
       void
       commit_step(const double          t,
                   const LA::Vector     &field,

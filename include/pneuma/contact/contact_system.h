@@ -17,8 +17,8 @@
  * partition boundaries. The rank owning the winning cell assembles the
  * point's penalty force and exact tangent.
  *
- * With a smoothed master normal (the default) the patches carry the
- * nodal-averaged normals of their nodes (NodalNormals, from the owned and
+ * With a smoothed master normal (Master normal = smoothed) the patches carry
+ * the nodal-averaged normals of their nodes (NodalNormals, from the owned and
  * ghost cells of the pair's regions), and the terms of a point reach the
  * nodes those normals depend on: its local matrix is chained from the
  * variables (slave, cell nodes, nodal normals) to the dofs (slave, the
@@ -115,9 +115,23 @@ namespace pneuma
                const bool                       probe = false);
 
       /// Accept the friction state of the last assembly (the converged
-      /// one): stick anchors stay, slipping ones move.
+      /// one): stick anchors stay, slipping ones move. The points near the
+      /// master in it become the reference of check_step().
       void
       commit_step();
+
+      /**
+       * Why the converged state @p u (ghosted) of a step is not to be
+       * accepted, or an empty string (the same on every rank): a point
+       * that was near its master at the last committed state moved
+       * relative to that material point of the master by more than the
+       * pair's Maximum motion per step (a fraction of the search
+       * distance; the candidates of the step may no longer hold it), or a
+       * point penetrates a master cell that was not among its element's
+       * candidates in the step (the search missed it).
+       */
+      std::string
+      check_step(const LA::Vector &u) const;
 
       /// Checkpoint: the stick anchors of every pair (gathered; by cell
       /// id, so a restart may use another number of ranks).
@@ -194,6 +208,13 @@ namespace pneuma
         /// would make of it.
         std::vector<int>      anchor, pending_anchor;
         std::vector<Point<2>> anchor_xi, pending_xi;
+        /// Step check: per point the master (local index, -1: none on
+        /// this rank or not near), the convective coordinates of the
+        /// projection and the offset x - y(xi) from it, in the last
+        /// assembly (seen) and at the last committed state (start).
+        std::vector<int>          seen_master, start_master;
+        std::vector<Point<2>>     seen_xi, start_xi;
+        std::vector<Tensor<1, 3>> seen_offset, start_offset;
       };
 
       /// The current patch of master @p m, its normal turned to the side
