@@ -178,6 +178,12 @@ namespace pneuma
     }
 
     void
+    CableSubsystem::first_guess(const double t, LA::Vector &field) const
+    {
+      cables.first_guess(t, field);
+    }
+
+    void
     CableSubsystem::set_prescribed_values(const double t,
                                           LA::Vector  &field) const
     {

@@ -321,6 +321,115 @@ namespace pneuma
     }
 
     void
+    CableSystem::first_guess(const double t, LA::Vector &solution) const
+    {
+      if (!is_owner)
+        return;
+      for (const auto &b : bodies)
+        {
+          const CableDefinition &d = b->definition;
+          // Slack: rho = L_ref / L0 < 1.
+          if (b->rho >= 1.)
+            continue;
+          const Tensor<1, 3> chord  = b->end_point - b->start_point;
+          const double       length = chord.norm();
+          if (length == 0.)
+            continue;
+          const Tensor<1, 3> axis = chord / length;
+          // A straight reference only (a sagged polyline is its own guess).
+          bool straight = true;
+          for (const auto &cell : b->tria.active_cell_iterators())
+            for (unsigned int v = 0; v < 2; ++v)
+              {
+                const Tensor<1, 3> x = cell->vertex(v) - b->start_point;
+                straight &= (x - (x * axis) * axis).norm() <= 1e-9 * length;
+              }
+          if (!straight)
+            continue;
+          // The dead load at the middle, its part normal to the chord.
+          const Point<3> middle = b->start_point + 0.5 * chord;
+          Tensor<1, 3>   w;
+          if (loads.has_gravity() && d.density > 0.)
+            w += d.density * d.area() * loads.gravity(t);
+          if (d.has_distributed_load)
+            {
+              d.distributed_load->set_time(t);
+              for (unsigned int c = 0; c < 3; ++c)
+                w[c] += d.distributed_load->value(middle, c);
+            }
+          w -= (w * axis) * axis;
+          if (w.norm() == 0.)
+            continue;
+          const Tensor<1, 3> down = w / w.norm();
+          // The parabola 4 f s (L - s) / L^2, stretched a little beyond L0
+          // so that it carries a tension (a stress-free chain of bars has
+          // no lateral stiffness): by H / EA with the inextensible
+          // parabola's H = q L^2 / (8 f). Its arc length, with r = f / L,
+          // is L/2 sqrt(1 + 16 r^2) + L/(8 r) asinh(4 r); f by bisection.
+          const double L0  = b->reference_length / b->rho;
+          const auto   arc = [&](const double f) {
+            const double r = f / length;
+            return 0.5 * length * std::sqrt(1. + 16. * r * r)
+                   + length / (8. * r) * std::asinh(4. * r);
+          };
+          const auto sag_of = [&](const double target) {
+            double lo = 1e-12 * length, hi = target;
+            for (unsigned int i = 0; i < 100; ++i)
+              (arc(0.5 * (lo + hi)) < target ? lo : hi) = 0.5 * (lo + hi);
+            return 0.5 * (lo + hi);
+          };
+          const double EA = d.youngs_modulus * d.area();
+          const double H  = w.norm() * length * length / (8. * sag_of(L0));
+          const double f  = sag_of(L0 * (1. + H / EA));
+          // Nodes equally spaced along the arc, as along the reference:
+          // the arc length from 0 to x is (G(k L) - G(k (L - 2 x))) / (2 k),
+          // k = 4 f / L^2, G(u) = (u sqrt(1 + u^2) + asinh(u)) / 2.
+          const double k = 4. * f / (length * length);
+          const auto   G = [](const double u) {
+            return 0.5 * (u * std::sqrt(1. + u * u) + std::asinh(u));
+          };
+          const auto arc_to = [&](const double x) {
+            return (G(k * length) - G(k * (length - 2. * x))) / (2. * k);
+          };
+          const double total = arc_to(length);
+          for (const auto &cell : b->dof_handler.active_cell_iterators())
+            for (unsigned int v = 0; v < 2; ++v)
+              {
+                const double s  = (cell->vertex(v) - b->start_point) * axis;
+                double       lo = 0., hi = length;
+                for (unsigned int i = 0; i < 100; ++i)
+                  (arc_to(0.5 * (lo + hi)) < s / length * total ? lo : hi) =
+                    0.5 * (lo + hi);
+                const double x     = 0.5 * (lo + hi);
+                const double sag   = k * x * (length - x);
+                const double slope = k * (length - 2. * x);
+                for (unsigned int c = 0; c < 3; ++c)
+                  solution[b->offset + cell->vertex_dof_index(v, c)] =
+                    (x - s) * axis[c] + sag * down[c];
+                // Further components are vectors of the section (the solid
+                // beam's semi-axes): turned by the mid-line's angle about
+                // axis x down.
+                const double       angle = std::atan(slope);
+                const Tensor<1, 3> n     = cross_product_3d(axis, down);
+                for (unsigned int c0 = 3; c0 + 2 < b->n_components; c0 += 3)
+                  {
+                    Tensor<1, 3> A;
+                    for (unsigned int c = 0; c < 3; ++c)
+                      A[c] = b->reference[cell->vertex_dof_index(v, c0 + c)];
+                    // Rodrigues' rotation about n.
+                    const Tensor<1, 3> R =
+                      A * std::cos(angle)
+                      + cross_product_3d(n, A) * std::sin(angle)
+                      + n * (n * A) * (1. - std::cos(angle));
+                    for (unsigned int c = 0; c < 3; ++c)
+                      solution[b->offset + cell->vertex_dof_index(v, c0 + c)] =
+                        R[c] - A[c];
+                  }
+              }
+        }
+    }
+
+    void
     CableSystem::set_prescribed_values(const double t,
                                        LA::Vector  &solution) const
     {

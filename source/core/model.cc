@@ -121,6 +121,7 @@ namespace pneuma
   void
   Model::setup()
   {
+    started = false;
     // Field unknowns in subsystem order, then the border.
     types::global_dof_index first    = 0;
     unsigned int            n_border = 0;
@@ -323,6 +324,7 @@ namespace pneuma
   solvers::BorderedVector
   Model::load_checkpoint(const Checkpoint &checkpoint, const double t)
   {
+    started = true;
     std::vector<std::string> names;
     for (const auto &s : subsystems)
       names.push_back(s->name());
@@ -377,6 +379,9 @@ namespace pneuma
   Model::begin_step(const double t, solvers::BorderedVector &state)
   {
     current_time = t;
+    if (!started)
+      for (const auto &s : subsystems)
+        s->first_guess(t, state.field);
     for (const auto &s : subsystems)
       s->set_prescribed_values(t, state.field);
     apply_kinematic_constraints(state.field);
@@ -416,6 +421,7 @@ namespace pneuma
   void
   Model::commit_step(const double t, const solvers::BorderedVector &state)
   {
+    started          = true;
     committed_counts = {linear_solves,
                         solver.n_factorizations(),
                         solver.n_krylov_iterations()};

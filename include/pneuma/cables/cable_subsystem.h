@@ -75,6 +75,8 @@ namespace pneuma
         const AffineConstraints<double> &constraints) const override;
 
       void
+      first_guess(const double t, LA::Vector &field) const override;
+      void
       set_prescribed_values(const double t, LA::Vector &field) const override;
       void
       assemble(const Assembly &a) override;

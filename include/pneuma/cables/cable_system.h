@@ -129,6 +129,16 @@ namespace pneuma
       /// update).
       void
       add_support_constraints(AffineConstraints<double> &constraints) const;
+      /**
+       * The first guess of a run's first step (owned entries of
+       * @p solution): a cable or beam whose straight reference is shorter
+       * than its unstressed length L0 is sagged into the parabola of
+       * length L0 along the part of its dead load (gravity, distributed
+       * load at @p t and the middle) normal to the chord, its sections
+       * turned with the mid-line. Others are left as they are.
+       */
+      void
+      first_guess(const double t, LA::Vector &solution) const;
       /// Set the supported end dofs of @p solution to their prescribed
       /// values at pseudo time @p t (owned entries).
       void

@@ -325,6 +325,9 @@ namespace pneuma
 
     /// Pseudo time of the loads in assemble().
     double current_time = 0.;
+    /// A step has been committed (or a checkpoint loaded): steps no longer
+    /// start from the reference state (Subsystem::first_guess).
+    bool started = false;
 
     /**
      * The residual alone at @p u and pseudo time @p t (path following

@@ -241,6 +241,20 @@ namespace pneuma
     }
 
     // ---- the life of a step
+    /**
+     * The first step of a run starts from the reference state: write a
+     * first guess of this subsystem's free unknowns for the step to @p t
+     * into the owned entries of @p field (a cable that is slack in its
+     * straight reference hangs along its load, so that Newton does not
+     * settle on the straight, compressed equilibrium). Prescribed values
+     * are written afterwards.
+     */
+    virtual void
+    first_guess(const double t, LA::Vector &field) const
+    {
+      (void)t;
+      (void)field;
+    }
     /// Write the prescribed values at pseudo time @p t into the owned
     /// entries of @p field.
     virtual void
