@@ -361,16 +361,19 @@ namespace pneuma
           if (w.norm() == 0.)
             continue;
           const Tensor<1, 3> down = w / w.norm();
-          // The parabola 4 f s (L - s) / L^2, stretched a little beyond L0
-          // so that it carries a tension (a stress-free chain of bars has
-          // no lateral stiffness): by H / EA with the inextensible
-          // parabola's H = q L^2 / (8 f). Its arc length, with r = f / L,
-          // is L/2 sqrt(1 + 16 r^2) + L/(8 r) asinh(4 r); f by bisection.
+          // The parabola k x (L - x), k = 4 f / L^2, stretched a little
+          // beyond L0 so that it carries a tension (a stress-free chain of
+          // bars has no lateral stiffness): by H / EA with the inextensible
+          // parabola's H = q L^2 / (8 f). Its arc length from 0 to x is
+          // (G(k L) - G(k (L - 2 x))) / (2 k), G(u) = (u sqrt(1 + u^2) +
+          // asinh(u)) / 2, so the whole arc is G(k L) / k; f by bisection.
+          const auto G = [](const double u) {
+            return 0.5 * (u * std::sqrt(1. + u * u) + std::asinh(u));
+          };
           const double L0  = b->reference_length / b->rho;
           const auto   arc = [&](const double f) {
-            const double r = f / length;
-            return 0.5 * length * std::sqrt(1. + 16. * r * r)
-                   + length / (8. * r) * std::asinh(4. * r);
+            const double k = 4. * f / (length * length);
+            return G(k * length) / k;
           };
           const auto sag_of = [&](const double target) {
             double lo = 1e-12 * length, hi = target;
@@ -381,17 +384,12 @@ namespace pneuma
           const double EA = d.youngs_modulus * d.area();
           const double H  = w.norm() * length * length / (8. * sag_of(L0));
           const double f  = sag_of(L0 * (1. + H / EA));
-          // Nodes equally spaced along the arc, as along the reference:
-          // the arc length from 0 to x is (G(k L) - G(k (L - 2 x))) / (2 k),
-          // k = 4 f / L^2, G(u) = (u sqrt(1 + u^2) + asinh(u)) / 2.
-          const double k = 4. * f / (length * length);
-          const auto   G = [](const double u) {
-            return 0.5 * (u * std::sqrt(1. + u * u) + std::asinh(u));
-          };
-          const auto arc_to = [&](const double x) {
+          // Nodes equally spaced along the arc, as along the reference.
+          const double k      = 4. * f / (length * length);
+          const auto   arc_to = [&](const double x) {
             return (G(k * length) - G(k * (length - 2. * x))) / (2. * k);
           };
-          const double total = arc_to(length);
+          const double total = G(k * length) / k;
           for (const auto &cell : b->dof_handler.active_cell_iterators())
             for (unsigned int v = 0; v < 2; ++v)
               {

@@ -358,16 +358,11 @@ namespace pneuma
             double distance;
             int    rank;
           };
-          std::vector<Best>                        best(n_points,
+          std::vector<Best>         best(n_points,
                                  {std::numeric_limits<double>::max(), rank});
-          std::vector<unsigned int>                best_master(n_points, 0);
-          std::vector<Projection>                  best_projection(n_points);
-          std::vector<std::array<Tensor<1, 3>, 2>> slave(d.cell_dofs.size());
-          for (unsigned int c = 0; c < d.cell_dofs.size(); ++c)
-            for (unsigned int v = 0; v < 2; ++v)
-              for (unsigned int i = 0; i < 3; ++i)
-                slave[c][v][i] =
-                  d.cell_reference[c][v][i] + u[d.cell_dofs[c][3 * v + i]];
+          std::vector<unsigned int> best_master(n_points, 0);
+          std::vector<Projection>   best_projection(n_points);
+          const auto                slave = current_slave(d, u);
           // Solid beam: the current section at the element's nodes.
           std::vector<SlaveSection> sections(d.beam ? d.cell_dofs.size() : 0);
           for (unsigned int c = 0; c < sections.size(); ++c)
@@ -659,20 +654,27 @@ namespace pneuma
         }
     }
 
+    std::vector<std::array<Tensor<1, 3>, 2>>
+    ContactSystem::current_slave(const PairData &d, const LA::Vector &u) const
+    {
+      std::vector<std::array<Tensor<1, 3>, 2>> slave(d.cell_dofs.size());
+      for (unsigned int c = 0; c < d.cell_dofs.size(); ++c)
+        for (unsigned int v = 0; v < 2; ++v)
+          for (unsigned int i = 0; i < 3; ++i)
+            slave[c][v][i] =
+              d.cell_reference[c][v][i] + u[d.cell_dofs[c][3 * v + i]];
+      return slave;
+    }
+
     std::string
     ContactSystem::check_step(const LA::Vector &u) const
     {
       for (unsigned int k = 0; k < pairs.size(); ++k)
         {
-          const PairData                          &d = pairs[k];
-          const ContactPair                       &p = parameters.all()[k];
-          std::vector<std::array<Tensor<1, 3>, 2>> slave(d.cell_dofs.size());
-          for (unsigned int c = 0; c < d.cell_dofs.size(); ++c)
-            for (unsigned int v = 0; v < 2; ++v)
-              for (unsigned int i = 0; i < 3; ++i)
-                slave[c][v][i] =
-                  d.cell_reference[c][v][i] + u[d.cell_dofs[c][3 * v + i]];
-          const auto point = [&](const CablePoint &pt) {
+          const PairData    &d     = pairs[k];
+          const ContactPair &p     = parameters.all()[k];
+          const auto         slave = current_slave(d, u);
+          const auto         point = [&](const CablePoint &pt) {
             return (1. - pt.eta) * slave[pt.cable_cell][0]
                    + pt.eta * slave[pt.cable_cell][1];
           };

@@ -217,6 +217,11 @@ namespace pneuma
         std::vector<Tensor<1, 3>> seen_offset, start_offset;
       };
 
+      /// The current end points of every cable element of pair @p d at
+      /// @p u (ghosted).
+      std::vector<std::array<Tensor<1, 3>, 2>>
+      current_slave(const PairData &d, const LA::Vector &u) const;
+
       /// The current patch of master @p m, its normal turned to the side
       /// @p outside (u = nullptr: the reference); with @p normals (and u)
       /// it carries the nodal normals.
