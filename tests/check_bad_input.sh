@@ -114,6 +114,14 @@ check "$k" 1 "Cables/Cable 1/solid beam/Section axis: is parallel to the cable" 
 check "$k" 1 "Cables/Cable 1/Points" --set "Cables/Cable 1/Points=0, 0, 0; 1, 0, 0"
 check "$k" 1 "Contact/Number of pairs: contact needs a membrane" --set "Contact/Number of pairs=1"
 check "$dir/valid.prm" 1 "Contact/Pair 1/Cable: there is no cable 1" --set "Contact/Number of pairs=1"
+# Ties: a cable hanging from the disc's centre.
+t=(--set "Cables/Number of cables=1" --set "Cables/Cable 1/polyline/Points=0, 0, 0; 0, 0, -0.1" --set "Cables/Cable 1/End support=fixed" --set "Ties/Number of ties=1")
+check "$k" 1 "Ties/Number of ties: ties need a membrane" --set "Ties/Number of ties=1"
+check "$dir/valid.prm" 1 "Ties/Number of ties: ties need cables" --set "Ties/Number of ties=1"
+check "$dir/valid.prm" 1 "Ties/Tie 1/Cable: there is no cable 2" "${t[@]}" --set "Ties/Tie 1/Cable=2"
+check "$dir/valid.prm" 1 "Ties/Tie 1/Nodes: ties a supported end of Cables/Cable 1" "${t[@]}" --set "Ties/Tie 1/Nodes=both ends"
+check "$dir/valid.prm" 1 "Ties/Tie 1/Maximum distance: the node at (0 0 0.05) of Cables/Cable 1 has no membrane point within the maximum distance 0.005000 m" "${t[@]}" --set "Ties/Tie 1/Nodes=start" --set "Cables/Cable 1/polyline/Points=0, 0, 0.05; 0, 0, -0.1"
+check "$dir/valid.prm" 1 "Ties/Tie 1/Nodes: Cables/Cable 1 is closed" "${t[@]}" --set "Cables/Cable 1/Shape=ring" --set "Cables/Cable 1/ring/Radius=0.05" --set "Cables/Cable 1/End support=free"
 c="$dir/chamber_valid.prm"
 check "$c" 1 "Chambers/Chamber 1/Regions: the oriented walls do not close" --set "Chambers/Chamber 1/Regions=0, 1"
 check "$c" 1 "flipping region 1 or 2 closes it" --set "Chambers/Chamber 1/Regions=0, -1, 2"
@@ -162,7 +170,7 @@ check "$k"                          1 "Contact/Pair 1/Membrane regions: the mesh
 # Ill-posed scenes: free rigid-body motions, named before any work.
 check "$dir/valid.prm"              1 "Boundary conditions: the membrane is free to move as a rigid body (translation along x; translation along y; translation along z; rotation about x" --set "Boundary conditions/Fixed boundaries="
 check "$w"                          1 "the membrane is free to move as a rigid body (translation along y" --set "Geometry/gmsh/Mesh file=$dir/../../meshes/waterbeam.msh" --set "Boundary conditions/Fixed points=0,0,0: xyz"
-check "$k"                          1 "Cables/Cable 1: has no support (Start support and End support are free) and no contact pair holds it" --set "Cables/Cable 1/Start support=free" --set "Cables/Cable 1/End support=free"
+check "$k"                          1 "Cables/Cable 1: has no support (Start support and End support are free) and no contact pair or tie holds it" --set "Cables/Cable 1/Start support=free" --set "Cables/Cable 1/End support=free"
 check "$k"                          1 "Cables/Cable 2: has no support" --set "Cables/Number of cables=2"
 mkdir -p not_a_directory/history.csv
 check_mpi "$dir/valid.prm"          1 "Output/Directory: cannot write into" --set "Output/Directory=not_a_directory"

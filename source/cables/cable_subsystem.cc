@@ -152,15 +152,16 @@ namespace pneuma
       for (unsigned int k = 0; k < parameters.size(); ++k)
         {
           const auto &d = parameters[k];
-          check_input(d.start_support != EndSupport::free
-                        || d.end_support != EndSupport::free || held.count(k),
-                      d.path,
-                      std::string("has no support (")
-                        + (d.closed()
-                             ? "a ring has no ends"
-                             : "Start support and End support are free")
-                        + ") and no contact pair holds it: it would move as a "
-                          "rigid body");
+          check_input(
+            d.start_support != EndSupport::free
+              || d.end_support != EndSupport::free || held.count(k),
+            d.path,
+            std::string("has no support (")
+              + (d.closed() ? "a ring has no ends"
+                            : "Start support and End support are free")
+              + ") and no contact pair or tie holds it: it would move "
+                "as a "
+                "rigid body");
         }
     }
 

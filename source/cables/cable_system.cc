@@ -118,6 +118,40 @@ namespace pneuma
       return v;
     }
 
+    std::vector<std::vector<types::global_dof_index>>
+    CableSystem::node_dofs(const unsigned int k, const bool ends_only) const
+    {
+      const Body                                       &b = *bodies[k];
+      std::vector<std::vector<types::global_dof_index>> result;
+      const auto global = [&](std::vector<types::global_dof_index> dofs) {
+        for (auto &i : dofs)
+          i += b.offset;
+        return dofs;
+      };
+      if (ends_only)
+        {
+          if (!b.start_dofs.empty())
+            {
+              result.push_back(global(b.start_dofs));
+              result.push_back(global(b.end_dofs));
+            }
+          return result;
+        }
+      // FE_Q(1)^n: the dofs of a vertex are its components.
+      std::vector<bool> seen(b.tria.n_vertices(), false);
+      for (const auto &cell : b.dof_handler.active_cell_iterators())
+        for (unsigned int v = 0; v < 2; ++v)
+          if (!seen[cell->vertex_index(v)])
+            {
+              seen[cell->vertex_index(v)] = true;
+              std::vector<types::global_dof_index> dofs;
+              for (unsigned int c = 0; c < b.n_components; ++c)
+                dofs.push_back(b.offset + cell->vertex_dof_index(v, c));
+              result.push_back(dofs);
+            }
+      return result;
+    }
+
     void
     CableSystem::set_output_field(const unsigned int    k,
                                   const std::string    &name,

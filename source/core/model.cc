@@ -461,22 +461,36 @@ namespace pneuma
       std::any_of(subsystems.begin(), subsystems.end(), [](const auto &s) {
         return s->needs_support_residual();
       });
+    const bool unconstrained =
+      std::any_of(subsystems.begin(), subsystems.end(), [](const auto &s) {
+        return s->needs_unconstrained_residual();
+      });
+    // A probe assembly of the residual with the given constraints.
+    const auto residual = [&](const AffineConstraints<double> &constraints,
+                              LA::Vector                      &result) {
+      TimerOutput::Scope ts(*timers, "assembly");
+      result = make_field();
+      Vector<double> border_residual(n_border());
+      Assembly       a;
+      a.time            = current_time;
+      a.field           = &ghosted;
+      a.border          = &state.border;
+      a.constraints     = &constraints;
+      a.residual        = &result;
+      a.border_residual = &border_residual;
+      a.coupling        = &scratch_coupling;
+      a.probe           = true;
+      for (const auto &s : subsystems)
+        s->assemble(a);
+    };
     if (support)
+      residual(kinematic, support_forces);
+    if (unconstrained)
       {
-        TimerOutput::Scope ts(*timers, "assembly");
-        support_forces = make_field();
-        Vector<double> border_residual(n_border());
-        Assembly       a;
-        a.time            = current_time;
-        a.field           = &ghosted;
-        a.border          = &state.border;
-        a.constraints     = &kinematic;
-        a.residual        = &support_forces;
-        a.border_residual = &border_residual;
-        a.coupling        = &scratch_coupling;
-        a.probe           = true;
-        for (const auto &s : subsystems)
-          s->assemble(a);
+        AffineConstraints<double> none;
+        none.reinit(relevant);
+        none.close();
+        residual(none, unconstrained_forces);
       }
     for (const auto &s : subsystems)
       s->add_statistics(statistics, ghosted);

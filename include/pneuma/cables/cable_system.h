@@ -108,6 +108,14 @@ namespace pneuma
       CableView
       view(const unsigned int k) const;
 
+      /**
+       * The global dofs of every node of cable @p k (each node's components
+       * in the element's order: position first), in mesh order; with
+       * @p ends_only, the start node and the end node of an open cable.
+       */
+      std::vector<std::vector<types::global_dof_index>>
+      node_dofs(const unsigned int k, const bool ends_only) const;
+
       /// Extra cell fields of cable @p k for the next write_output() (e.g.
       /// the contact line load), by name.
       void

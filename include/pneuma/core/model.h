@@ -251,6 +251,17 @@ namespace pneuma
     {
       return support_forces;
     }
+    /**
+     * The residual f_int - f_ext of every subsystem at the reported state
+     * with no constraint condensed: at a tied cable node it is the force
+     * the tie exerts on it. Valid during add_statistics() when a subsystem
+     * asked for it (Subsystem::needs_unconstrained_residual).
+     */
+    const LA::Vector &
+    unconstrained_residual() const
+    {
+      return unconstrained_forces;
+    }
     /// Statistics of every subsystem at @p state (call reduce() after).
     void
     add_statistics(Statistics                    &statistics,
@@ -427,7 +438,9 @@ namespace pneuma
     LA::SparseMatrix tangent, laplacian;
     LA::Vector       external, ghosted;
     /// support_residual() of the last add_statistics().
-    LA::Vector              support_forces;
+    LA::Vector support_forces;
+    /// unconstrained_residual() of the last add_statistics().
+    LA::Vector              unconstrained_forces;
     solvers::BorderCoupling coupling;
     /// Border blocks of assemble_residual(), thrown away.
     solvers::BorderCoupling scratch_coupling;

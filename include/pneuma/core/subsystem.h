@@ -375,6 +375,13 @@ namespace pneuma
     {
       return false;
     }
+    /// True if add_statistics() reads Model::unconstrained_residual() (one
+    /// more residual assembly of every subsystem per report).
+    virtual bool
+    needs_unconstrained_residual() const
+    {
+      return false;
+    }
     /// Add named values with units at the converged state @p field.
     virtual void
     add_statistics(Statistics &statistics, const LA::Vector &field) const
