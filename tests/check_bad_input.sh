@@ -114,6 +114,12 @@ check "$k" 1 "Cables/Cable 1/solid beam/Section axis: is parallel to the cable" 
 check "$k" 1 "Cables/Cable 1/Points" --set "Cables/Cable 1/Points=0, 0, 0; 1, 0, 0"
 check "$k" 1 "Contact/Number of pairs: contact needs a membrane" --set "Contact/Number of pairs=1"
 check "$dir/valid.prm" 1 "Contact/Pair 1/Cable: there is no cable 1" --set "Contact/Number of pairs=1"
+# Curved Gmsh regions: the vertices must lie on the declared surface.
+g=(--set "Geometry/Type=gmsh" --set "Geometry/gmsh/Mesh file=$dir/../../meshes/two_spheres.msh" --set "Materials/Region 1/Thickness=1e-3")
+check "$dir/valid.prm" 1 "Geometry/gmsh/Curved regions: item 1: the vertices lie between" "${g[@]}" --set "Geometry/gmsh/Curved regions=0: sphere 1,0,0"
+check_mpi "$dir/valid.prm" 1 "Geometry/gmsh/Curved regions: item 2: the vertices lie between" "${g[@]}" --set "Geometry/gmsh/Curved regions=0: sphere 0,0,0; 1: cylinder 3,0,0, 1,0,0"
+check "$dir/valid.prm" 1 "Geometry/gmsh/Curved regions: the mesh has no cells in the regions of item 1" "${g[@]}" --set "Geometry/gmsh/Curved regions=5: sphere 0,0,0"
+check "$dir/valid.prm" 1 "Geometry/gmsh/Curved regions: '0: cone 0,0,0': give" "${g[@]}" --set "Geometry/gmsh/Curved regions=0: cone 0,0,0"
 # Ties: a cable hanging from the disc's centre.
 t=(--set "Cables/Number of cables=1" --set "Cables/Cable 1/polyline/Points=0, 0, 0; 0, 0, -0.1" --set "Cables/Cable 1/End support=fixed" --set "Ties/Number of ties=1")
 check "$k" 1 "Ties/Number of ties: ties need a membrane" --set "Ties/Number of ties=1"

@@ -4,15 +4,22 @@
  * surfaces become material ids, physical curves boundary ids. Lines shared
  * by more than two cells (dividers, seams) are split by fans and tied
  * again after the dofs exist (geometry/junctions.h). The outside is as
- * meshed, flipped, or away from an interior point.
+ * meshed, flipped, or away from an interior point. Regions declared
+ * curved (a sphere or a cylinder) get a manifold: refinement puts new
+ * vertices on the true surface and a degree-2 mapping follows it.
  */
+
+#include <deal.II/grid/manifold_lib.h>
 
 #include <pneuma/core/input_error.h>
 #include <pneuma/geometry/gmsh_surface_reader.h>
 #include <pneuma/geometry/junctions.h>
 #include <pneuma/geometry/surface_geometry.h>
+#include <pneuma/loads/loads.h>
 
 #include <fstream>
+#include <memory>
+#include <sstream>
 
 namespace pneuma
 {
@@ -37,6 +44,17 @@ namespace pneuma
                             "outward).",
                             Patterns::Selection(
                               "as meshed|flipped|outward from interior point"));
+          prm.add_parameter(
+            "Curved regions",
+            curved_text,
+            "Regions whose surface is a sphere or a cylinder, so that "
+            "refinement and the degree-2 mapping follow it instead of the "
+            "flat facets of the file: 'ids: sphere cx, cy, cz' or 'ids: "
+            "cylinder px, py, pz, dx, dy, dz' (a point on the axis and its "
+            "direction), separated by ';' (empty: all flat). The vertices "
+            "of each region must lie on its surface (to 1e-3 of its radius); "
+            "a line shared by two regions follows the later one.",
+            Patterns::Anything());
           prm.add_parameter("Interior point",
                             interior,
                             "A point inside the closed surface [m] for "
@@ -52,6 +70,7 @@ namespace pneuma
                       path + "/Mesh file",
                       "cannot open '" + mesh_file + "'");
           parameter = path + "/Mesh file";
+          parse_curved(path + "/Curved regions");
         }
         void
         create_coarse_mesh(Triangulation<2, 3> &coarse) const override
@@ -68,6 +87,45 @@ namespace pneuma
           check_input(coarse.n_active_cells() > 0,
                       parameter,
                       "'" + mesh_file + "' has no surface cells");
+        }
+        void
+        attach_manifolds(
+          parallel::distributed::Triangulation<2, 3> &tria) const override
+        {
+          for (unsigned int k = 0; k < curved.size(); ++k)
+            {
+              const Curved &c = curved[k];
+              // The coarse mesh is on every rank: all check alike.
+              double lo = std::numeric_limits<double>::max(), hi = 0.;
+              for (const auto &cell : tria.active_cell_iterators())
+                if (c.ids.count(cell->material_id()))
+                  {
+                    cell->set_all_manifold_ids(first_manifold + k);
+                    for (const auto v : cell->vertex_indices())
+                      {
+                        const double r = c.radius(cell->vertex(v));
+                        lo             = std::min(lo, r);
+                        hi             = std::max(hi, r);
+                      }
+                  }
+              check_input(hi > 0.,
+                          curved_path,
+                          "the mesh has no cells in the regions of item "
+                            + std::to_string(k + 1));
+              std::ostringstream where;
+              where << "item " << k + 1 << ": the vertices lie between " << lo
+                    << " and " << hi << " m from the "
+                    << (c.sphere ? "centre" : "axis") << ", not on one "
+                    << (c.sphere ? "sphere" : "cylinder");
+              check_input(hi - lo <= 1e-3 * hi, curved_path, where.str());
+              if (c.sphere)
+                tria.set_manifold(first_manifold + k,
+                                  SphericalManifold<2, 3>(c.point));
+              else
+                tria.set_manifold(first_manifold + k,
+                                  CylindricalManifold<2, 3>(c.direction,
+                                                            c.point));
+            }
         }
         double
         orientation(const Point<3> &x, const Tensor<1, 3> &n) const override
@@ -92,6 +150,79 @@ namespace pneuma
         }
 
       private:
+        /// One item of "Curved regions".
+        struct Curved
+        {
+          std::set<unsigned int> ids;
+          bool                   sphere = true;
+          Point<3>               point;
+          Tensor<1, 3>           direction;
+          /// Distance from the centre or the axis.
+          double
+          radius(const Point<3> &x) const
+          {
+            const Tensor<1, 3> r = x - point;
+            return sphere ? r.norm() : (r - (r * direction) * direction).norm();
+          }
+        };
+        static constexpr types::manifold_id first_manifold = 1;
+
+        void
+        parse_curved(const std::string &path)
+        {
+          curved.clear();
+          curved_path = path;
+          for (const auto &item :
+               Utilities::split_string_list(curved_text, ';'))
+            {
+              const auto colon = item.find(':');
+              check_input(colon != std::string::npos,
+                          path,
+                          "'" + item
+                            + "' is not 'ids: sphere ...' or 'ids: "
+                              "cylinder ...'");
+              Curved c;
+              c.ids = loads::parse_id_list(item.substr(0, colon), path);
+              std::istringstream rest(item.substr(colon + 1));
+              std::string        kind;
+              rest >> kind;
+              std::string numbers;
+              std::getline(rest, numbers);
+              const auto values = Utilities::split_string_list(numbers, ',');
+              check_input((kind == "sphere" && values.size() == 3)
+                            || (kind == "cylinder" && values.size() == 6),
+                          path,
+                          "'" + item
+                            + "': give 'sphere cx, cy, cz' or "
+                              "'cylinder px, py, pz, dx, dy, dz'");
+              std::vector<double> x;
+              for (const auto &v : values)
+                {
+                  try
+                    {
+                      x.push_back(Utilities::string_to_double(v));
+                    }
+                  catch (...)
+                    {
+                      throw InputError(path, "'" + v + "' is not a number");
+                    }
+                }
+              c.sphere = kind == "sphere";
+              c.point  = Point<3>(x[0], x[1], x[2]);
+              if (!c.sphere)
+                {
+                  c.direction = Tensor<1, 3>({x[3], x[4], x[5]});
+                  check_input(c.direction.norm() > 0.,
+                              path,
+                              "'" + item + "': the axis direction is zero");
+                  c.direction /= c.direction.norm();
+                }
+              curved.push_back(c);
+            }
+        }
+
+        std::string         curved_text, curved_path;
+        std::vector<Curved> curved;
         /// The "warp" $ElementData vector of every cell (empty: none).
         mutable std::vector<Tensor<1, 3>> cell_warp;
         std::string         mesh_file, orientation_mode = "as meshed";
