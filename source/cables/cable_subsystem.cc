@@ -159,8 +159,7 @@ namespace pneuma
             std::string("has no support (")
               + (d.closed() ? "a ring has no ends"
                             : "Start support and End support are free")
-              + ") and no contact pair or tie holds it: it would move "
-                "as a "
+              + ") and no contact pair or tie holds it: it would move as a "
                 "rigid body");
         }
     }
