@@ -183,6 +183,12 @@ namespace pneuma
       cables.first_guess(t, field);
     }
 
+    bool
+    CableSubsystem::ramp_initial_loads(const double t0, const double t1)
+    {
+      return cables.ramp_initial_loads(t0, t1);
+    }
+
     void
     CableSubsystem::set_prescribed_values(const double t,
                                           LA::Vector  &field) const

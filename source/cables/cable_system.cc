@@ -41,8 +41,9 @@ namespace pneuma
       /// Reference values of every local dof: position (components 0-2),
       /// then the element's own (the solid beam's semi-axis vectors A1, A2).
       Vector<double> reference;
-      /// Reference length / unstressed length.
-      double rho = 1., reference_length = 0.;
+      /// Reference length / unstressed length (rho_full: of the given
+      /// Unstressed length, before a ramp).
+      double rho = 1., rho_full = 1., reference_length = 0.;
       /// Local dofs of the start, end and middle node (all components).
       std::vector<types::global_dof_index> start_dofs, end_dofs, mid_dofs;
       Point<3>                             start_point, end_point;
@@ -238,6 +239,7 @@ namespace pneuma
             b->rho = 1. + staged_prestress(d, 0.) / EA;
           else if (d.unstressed_length > 0.)
             b->rho = b->reference_length / d.unstressed_length;
+          b->rho_full = b->rho;
           element.setup(d, b->rho);
 
           // Node tangents (mean of the adjacent cells) for the sections.
@@ -879,29 +881,77 @@ namespace pneuma
     }
 
     double
-    CableSystem::staged_prestress(const CableDefinition &d, const double t)
+    CableSystem::ramp_factor(const double t) const
     {
-      if (!d.staged_prestress)
-        return d.prestress_force;
-      d.prestress_factor->set_time(t);
-      return d.prestress_force * d.prestress_factor->value(Point<3>());
+      if (ramp_end <= ramp_start)
+        return 1.;
+      return std::clamp((t - ramp_start) / (ramp_end - ramp_start), 0., 1.);
+    }
+
+    double
+    CableSystem::staged_prestress(const CableDefinition &d,
+                                  const double           t) const
+    {
+      double f = ramp_factor(t);
+      if (d.staged_prestress)
+        {
+          d.prestress_factor->set_time(t);
+          f *= d.prestress_factor->value(Point<3>());
+        }
+      return f * d.prestress_force;
+    }
+
+    bool
+    CableSystem::ramp_initial_loads(const double t0, const double t1)
+    {
+      ramp_start = ramp_end = 0.;
+      if (t1 <= t0)
+        return false;
+      bool tensioned = false;
+      for (const auto &b : bodies)
+        {
+          const CableDefinition &d = b->definition;
+          if (d.prestress_force > 0.)
+            {
+              double f = 1.;
+              if (d.staged_prestress)
+                {
+                  d.prestress_factor->set_time(t0);
+                  f = d.prestress_factor->value(Point<3>());
+                }
+              tensioned = tensioned || f != 0.;
+            }
+          else
+            tensioned = tensioned || b->rho_full > 1.;
+        }
+      if (tensioned)
+        {
+          ramp_start = t0;
+          ramp_end   = t1;
+        }
+      return tensioned;
     }
 
     void
     CableSystem::stage_prestress(const double t) const
     {
+      const bool ramped = ramp_end > ramp_start;
       for (const auto &b : bodies)
-        if (b->definition.staged_prestress)
-          {
-            const double EA =
-              b->definition.youngs_modulus * b->definition.area();
-            const double rho = 1. + staged_prestress(b->definition, t) / EA;
-            if (rho != b->rho)
-              {
-                b->rho = rho;
-                b->element.set_length_ratio(rho);
-              }
-          }
+        {
+          const CableDefinition &d = b->definition;
+          double                 rho;
+          if (d.prestress_force > 0. && (d.staged_prestress || ramped))
+            rho = 1. + staged_prestress(d, t) / (d.youngs_modulus * d.area());
+          else if (ramped && b->rho_full > 1.)
+            rho = 1. + ramp_factor(t) * (b->rho_full - 1.);
+          else
+            rho = b->rho_full;
+          if (rho != b->rho)
+            {
+              b->rho = rho;
+              b->element.set_length_ratio(rho);
+            }
+        }
     }
 
     std::vector<CableReport>

@@ -680,6 +680,17 @@ namespace pneuma
   }
 
   bool
+  Model::ramp_initial_loads(const double t0, const double t1)
+  {
+    bool any = false;
+    for (const auto &s : subsystems)
+      any = s->ramp_initial_loads(t0, t1) || any;
+    // The loads at a given pseudo time changed: no assembly is current.
+    tangent_is_current = false;
+    return any;
+  }
+
+  bool
   Model::prescribed_values_change(const double t0, const double t1) const
   {
     LA::Vector a = make_field(), b = make_field();

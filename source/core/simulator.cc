@@ -664,6 +664,10 @@ namespace pneuma
       }
     row.add(
       run, "final_time", "", path_result.final_time, counts | Statistics::test);
+    // Load stepping/Initial prestress: where the ramp of the prestress
+    // acting at t = 0 ended, if it was ramped.
+    if (path.state().ramp_end > path.state().ramp_start)
+      row.add(run, "prestress_ramp_end", "", path.state().ramp_end, counts);
     if (form_finding.enabled())
       {
         row.add_count(run,

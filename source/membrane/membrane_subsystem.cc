@@ -16,6 +16,7 @@
 #include <pneuma/membrane/membrane_subsystem.h>
 #include <pneuma/postprocess/membrane_fields.h>
 #include <pneuma/postprocess/membrane_probes.h>
+#include <pneuma/ties/tie_subsystem.h>
 
 #include <fstream>
 #include <limits>
@@ -905,7 +906,10 @@ namespace pneuma
     bool
     MembraneSubsystem::needs_support_residual() const
     {
-      return model.find<contact::ContactSubsystem>() != nullptr;
+      // Contact and ties pass cable forces to the membrane's held dofs
+      // (through the assembly, or through the tie constraints).
+      return model.find<contact::ContactSubsystem>() != nullptr
+             || model.find<ties::TieSubsystem>() != nullptr;
     }
 
     void

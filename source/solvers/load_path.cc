@@ -52,6 +52,21 @@ namespace pneuma
         "time: the first step of the stage moves the load by Initial "
         "increment.",
         Patterns::List(Patterns::Selection("load|arc-length|displacement"), 1));
+      prm.add_parameter(
+        "Initial prestress",
+        initial_prestress,
+        "Loads that act in full from t = 0 whatever the load curves (a "
+        "cable's Prestress force or short Unstressed length): full keeps "
+        "them so; ramped lets them grow linearly over the first stage "
+        "(from 0 at t = 0 to full at its end), with the loads that inflate "
+        "the structure, so that cut backs reduce them too; automatic "
+        "(default) ramps them only once the first step has failed in full, "
+        "or converged to an unstable state (judged with Stability/Check "
+        "inertia). From the end of the first stage on the loads are the same; "
+        "a run whose "
+        "first step converges to a stable state is the same under "
+        "automatic and full.",
+        Patterns::Selection("automatic|ramped|full"));
       prm.enter_subsection("Path following");
       prm.add_parameter("Constraint",
                         constraint_name,
@@ -124,6 +139,31 @@ namespace pneuma
                       "applies to the last stage, which is under load "
                       "control (set Load stepping/Control)");
         }
+    }
+
+    bool
+    StaticLoadPath::first_step_may_ramp(const unsigned int steps,
+                                        const double       t_old,
+                                        const Control      control) const
+    {
+      return initial_prestress == "automatic" && steps == 0 && t_old == 0.
+             && control == Control::load
+             && current.ramp_end <= current.ramp_start;
+    }
+
+    bool
+    StaticLoadPath::ramp_initial_loads(Model                    &model,
+                                       const ConditionalOStream &out)
+    {
+      const double t1 = stepping.stage_end(0);
+      if (!model.ramp_initial_loads(0., t1))
+        return false;
+      current.ramp_start = 0.;
+      current.ramp_end   = t1;
+      out << "  the prestress acting at t = 0 grows with the loads of the "
+             "first stage, to full at t = "
+          << t1 << " (Load stepping/Initial prestress)" << std::endl;
+      return true;
     }
 
     bool
@@ -366,17 +406,23 @@ namespace pneuma
                                            ? p.stiffness_stage
                                            : numbers::invalid_unsigned_int;
           current                      = p;
-          previous_stability           = StabilityReport();
-          previous_stability.computed  = p.negative_eigenvalues >= 0;
-          previous_stability.negative  = p.negative_eigenvalues;
-          result.critical_points       = p.critical_points;
+          model.ramp_initial_loads(p.ramp_start, p.ramp_end);
+          previous_stability          = StabilityReport();
+          previous_stability.computed = p.negative_eigenvalues >= 0;
+          previous_stability.negative = p.negative_eigenvalues;
+          result.critical_points      = p.critical_points;
         }
       else
         {
+          // A new run: no ramp from an earlier one (refinement cycles).
+          model.ramp_initial_loads(0., 0.);
           result.state       = model.initial_state();
           current            = PathState();
           previous_stability = StabilityReport();
           current.increment  = dt;
+          // Load stepping/Initial prestress = ramped: over the first step.
+          if (initial_prestress == "ramped" && control_of(0) == Control::load)
+            ramp_initial_loads(model, out);
           observer(PathStep{}, result.state);
         }
       BorderedVector last(result.state);
@@ -772,6 +818,22 @@ namespace pneuma
                 }
             }
 
+          // The automatic first step: a first state that is unstable
+          // under the full initial prestress (a tube crushed by a cable
+          // before it is inflated) is taken again with the prestress
+          // growing over the first stage.
+          if (newton.converged && stability.computed && stability.negative > 0
+              && first_step_may_ramp(result.steps, t_old, control)
+              && ramp_initial_loads(model, out))
+            {
+              out << "  (the first state was unstable under the full "
+                     "prestress: the step is taken again)"
+                  << std::endl;
+              result.state = last;
+              model.reject_step(t_old);
+              continue;
+            }
+
           // 3. Reject: back to the last state with a smaller increment.
           if (!newton.converged && newton.failure_reason == "interrupted")
             {
@@ -794,6 +856,11 @@ namespace pneuma
                   << "); cutting back to "
                   << (control != Control::load ? "a step of " : "dt = ") << dt
                   << std::endl;
+              // The automatic first step: a cut back does not reduce the
+              // loads that act in full from t = 0; from now on they grow
+              // with the others over the first stage.
+              if (first_step_may_ramp(result.steps, t_old, control))
+                ramp_initial_loads(model, out);
               if (dt < stepping.minimum())
                 {
                   std::ostringstream msg;

@@ -76,6 +76,8 @@ namespace pneuma
 
       void
       first_guess(const double t, LA::Vector &field) const override;
+      bool
+      ramp_initial_loads(const double t0, const double t1) override;
       void
       set_prescribed_values(const double t, LA::Vector &field) const override;
       void

@@ -217,9 +217,21 @@ namespace pneuma
               const LA::Vector *support = nullptr) const;
 
       /// The prestress force of @p d at pseudo time @p t (its Prestress
-      /// factor f(t) times the Prestress force).
-      static double
-      staged_prestress(const CableDefinition &d, const double t);
+      /// factor f(t) times the Prestress force, times the ramp of
+      /// ramp_initial_loads()).
+      double
+      staged_prestress(const CableDefinition &d, const double t) const;
+
+      /**
+       * The automatic first step (Subsystem::ramp_initial_loads): every
+       * cable in tension at @p t0 (a Prestress force acting there, or an
+       * Unstressed length shorter than the cable) takes it with the factor
+       * min(1, (t - t0)/(t1 - t0)) from now on: rho = 1 + h (rho_full - 1).
+       * Returns whether some cable is in tension at @p t0. A slack cable
+       * (rho < 1) is left as it is. @p t1 <= @p t0 removes the ramp.
+       */
+      bool
+      ramp_initial_loads(const double t0, const double t1);
 
       /// Write cables_<k>_<step>.vtu and the cables.pvd record (rank 0).
       void
@@ -229,9 +241,15 @@ namespace pneuma
                    const LA::Vector  &u);
 
     private:
-      /// rho = 1 + f(t) F/EA of every cable with a staged prestress.
+      /// rho = 1 + f(t) F/EA of every cable with a staged prestress, and
+      /// the ramped rho of every cable while ramp_initial_loads() acts.
       void
       stage_prestress(const double t) const;
+      /// The ramp factor min(1, (t - t0)/(t1 - t0)) (1 without a ramp).
+      double
+      ramp_factor(const double t) const;
+      /// The ramp of ramp_initial_loads() (none while ramp_end <= start).
+      double ramp_start = 0., ramp_end = 0.;
       struct Body;
 
       /// Per-cell element terms in the local numbering of body @p b.

@@ -357,6 +357,10 @@ namespace pneuma
     /// y = J x with the bordered Jacobian of the last assemble().
     void
     vmult(const solvers::BorderedVector &x, solvers::BorderedVector &y) const;
+    /// Ramp the loads that act in full from t = @p t0 over [t0, t1]
+    /// (Subsystem::ramp_initial_loads); true if some subsystem has any.
+    bool
+    ramp_initial_loads(const double t0, const double t1);
     /// True if some prescribed value (supports, rigid plates, cable ends)
     /// differs between pseudo times @p t0 and @p t1.
     bool

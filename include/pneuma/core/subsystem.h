@@ -255,6 +255,22 @@ namespace pneuma
       (void)t;
       (void)field;
     }
+    /**
+     * The automatic first step (Load stepping/Initial prestress): loads
+     * that act in full from the start of the run whatever the load curves
+     * (a cable's prestress or short unstressed length) grow from zero at
+     * @p t0 to full at @p t1 with the factor min(1, (t - t0)/(t1 - t0)),
+     * so that a cut back reduces them with the other loads; @p t1 <= @p t0
+     * removes the ramp (a new run). Returns whether this subsystem has
+     * such loads (the same on every rank).
+     */
+    virtual bool
+    ramp_initial_loads(const double t0, const double t1)
+    {
+      (void)t0;
+      (void)t1;
+      return false;
+    }
     /// Write the prescribed values at pseudo time @p t into the owned
     /// entries of @p field.
     virtual void

@@ -118,6 +118,9 @@ namespace pneuma
       double       arc_length = 0., last_dtau = 0.;
       unsigned int path_steps         = 0;
       bool         limit_since_return = false;
+      /// The automatic first step: the loads acting in full at t = 0 grow
+      /// over [ramp_start, ramp_end] (none while ramp_end <= ramp_start).
+      double ramp_start = 0., ramp_end = 0.;
 
       template <class Archive>
       void
@@ -129,6 +132,7 @@ namespace pneuma
         ar &negative_eigenvalues                 &critical_points;
         ar &path_active &path_stage &u_scale &force_scale &monitor_rate;
         ar &arc_length &last_dtau &path_steps             &limit_since_return;
+        ar &ramp_start                                    &ramp_end;
       }
     };
 
@@ -229,20 +233,34 @@ namespace pneuma
       follows_path() const;
 
     private:
+      /// Ramp the loads acting in full at t = 0 over the first stage
+      /// (Model::ramp_initial_loads), record it and say so; false if the
+      /// model has none.
+      bool
+      ramp_initial_loads(Model &model, const ConditionalOStream &out);
+      /// May the automatic first step ramp them now (the first step of a
+      /// new run, from t = 0, under load control, not ramped yet)?
+      bool
+      first_step_may_ramp(const unsigned int steps,
+                          const double       t_old,
+                          const Control      control) const;
+
       LoadStepping stepping;
       NewtonSolver newton_solver;
       /// "Load stepping/Control", one per stage (or one for all), and
       /// "Load stepping/Path following".
       std::vector<std::string> control_names{"load"};
       std::vector<Control>     controls{Control::load};
-      std::string              constraint_name   = "cylindrical";
-      unsigned int             monitor_point     = 0;
-      std::string              monitor_component = "z";
-      std::string              target_text;
-      double                   target           = 0.;
-      bool                     has_target       = false;
-      unsigned int             max_path_steps   = 200;
-      bool                     stop_at_critical = false;
+      /// "Load stepping/Initial prestress": automatic, ramped or full.
+      std::string  initial_prestress = "automatic";
+      std::string  constraint_name   = "cylindrical";
+      unsigned int monitor_point     = 0;
+      std::string  monitor_component = "z";
+      std::string  target_text;
+      double       target           = 0.;
+      bool         has_target       = false;
+      unsigned int max_path_steps   = 200;
+      bool         stop_at_critical = false;
 
       Control
       control_of(const unsigned int stage) const
