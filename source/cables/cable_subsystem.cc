@@ -183,6 +183,13 @@ namespace pneuma
       cables.first_guess(t, field);
     }
 
+    std::string
+    CableSubsystem::begin_step(const double t, const LA::Vector &, bool &)
+    {
+      cables.check_prestress(t);
+      return "";
+    }
+
     bool
     CableSubsystem::ramp_initial_loads(const double t0, const double t1)
     {

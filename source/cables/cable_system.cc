@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <fstream>
 #include <limits>
+#include <sstream>
 
 namespace pneuma
 {
@@ -930,6 +931,21 @@ namespace pneuma
           ramp_end   = t1;
         }
       return tensioned;
+    }
+
+    void
+    CableSystem::check_prestress(const double t) const
+    {
+      for (const auto &b : bodies)
+        if (b->definition.staged_prestress)
+          {
+            std::ostringstream when;
+            when << "the prestress force f(t) F is not finite at t = " << t;
+            check_input(std::isfinite(staged_prestress(b->definition, t)),
+                        b->definition.path
+                          + "/Prestress factor/Function expression",
+                        when.str());
+          }
     }
 
     void

@@ -115,6 +115,12 @@ namespace pneuma
     {
       const MPI_Comm comm = model.mpi_communicator();
       const auto    &all  = parameters.all();
+      // Every region a tie names must exist in the mesh.
+      for (const auto &d : all)
+        for (const auto id : d.regions)
+          check_input(membrane.material_ids().count(id) > 0,
+                      d.path + "/Membrane regions",
+                      "the mesh has no cells in region " + std::to_string(id));
 
       // Every tied node, in the same order on every rank.
       struct Node

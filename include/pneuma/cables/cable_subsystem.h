@@ -78,6 +78,9 @@ namespace pneuma
       first_guess(const double t, LA::Vector &field) const override;
       bool
       ramp_initial_loads(const double t0, const double t1) override;
+      /// A staged prestress that is not finite at @p t is an input error.
+      std::string
+      begin_step(const double t, const LA::Vector &field, bool &grown) override;
       void
       set_prescribed_values(const double t, LA::Vector &field) const override;
       void

@@ -233,6 +233,11 @@ namespace pneuma
       bool
       ramp_initial_loads(const double t0, const double t1);
 
+      /// Throws an InputError naming the Prestress factor of a cable whose
+      /// staged prestress is not finite at @p t (on every rank alike).
+      void
+      check_prestress(const double t) const;
+
       /// Write cables_<k>_<step>.vtu and the cables.pvd record (rank 0).
       void
       write_output(const std::string &directory,
