@@ -11,8 +11,10 @@
 # paper's shells, without their bending stiffness) and ends where the
 # unpressurized wall gives way under the load.
 # Writes output/airbeam_figure7/p<bar>bar/ (history.csv, VTU),
-# load_deflection.csv (pressure_bar, F_N, deflection_m, pressure_Pa) and
-# figure7.png; ends with a summary of each curve.
+# load_deflection.csv (pressure_bar, F_N, deflection_m, pressure_Pa),
+# figure7.png, a summary of each curve, and, where ParaView is installed,
+# p<bar>bar.png: the deformed beam coloured by its wrinkling state
+# (scripts/render_state.py).
 # Extra arguments are passed to every pneuma run (e.g. --set ...).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -39,3 +41,18 @@ for bar in 1 2 5 10 20 40; do
   fi
 done
 /usr/bin/python3 "$root/scripts/plot_figure7.py" "$out" 1 2 5 10 20 40
+# Pictures of the deformed beams (wrinkling state; the compression element
+# as a tube) where ParaView is installed (Debian: paraview, and xvfb
+# without a display).
+if command -v pvbatch > /dev/null; then
+  render=(pvbatch)
+  [ -z "${DISPLAY:-}" ] && command -v xvfb-run > /dev/null &&
+    render=(xvfb-run -a -s "-screen 0 1920x1080x24" pvbatch)
+  for bar in 1 2 5 10 20 40; do
+    "${render[@]}" "$root/scripts/render_state.py" "$out/p${bar}bar" \
+      "$out/p${bar}bar.png" --title "$bar bar (absolute), last converged state" \
+      2>/dev/null | grep written || echo "p = $bar bar: no picture (pvbatch failed)"
+  done
+else
+  echo "pvbatch not found: install paraview (and xvfb) for pictures of the deformed beams"
+fi

@@ -3,12 +3,20 @@
 # MPI and MUMPS; numdiff for the tests; Gmsh for meshes; ccache;
 # matplotlib for the chamber plots; OpenBLAS, which makes the MUMPS factorizations 5x faster than the
 # reference BLAS Debian selects otherwise).
-# Does nothing when everything is already there.
+# Does nothing when everything is already there. VTK's Python module (for
+# the tests' output checks) comes from python3-vtk9, or from
+# python3-paraview where ParaView is installed for pictures
+# (scripts/render_state.py): Debian's two packages conflict, so the one
+# present is kept.
 set -euo pipefail
 packages=(build-essential cmake ccache libdeal.ii-dev libmumps-dev numdiff
           libopenblas0-pthread
-          gmsh openmpi-bin time python3 python3-matplotlib python3-vtk9
+          gmsh openmpi-bin time python3 python3-matplotlib
           clang-format)
+if ! dpkg-query -W -f='${Status}' python3-paraview 2>/dev/null |
+     grep -q "install ok installed"; then
+  packages+=(python3-vtk9)
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" \
