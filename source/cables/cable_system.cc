@@ -240,7 +240,10 @@ namespace pneuma
             b->rho = 1. + staged_prestress(d, 0.) / EA;
           else if (d.unstressed_length > 0.)
             b->rho = b->reference_length / d.unstressed_length;
-          b->rho_full = b->rho;
+          // The unramped ratio (a set-up again for a refinement cycle may
+          // find the last run's ramp still set; the run resets it).
+          b->rho_full =
+            d.prestress_force > 0. ? 1. + d.prestress_force / EA : b->rho;
           element.setup(d, b->rho);
 
           // Node tangents (mean of the adjacent cells) for the sections.
