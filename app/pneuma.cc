@@ -12,6 +12,7 @@
 #include <pneuma/core/input_error.h>
 #include <pneuma/core/interrupt.h>
 #include <pneuma/core/simulator.h>
+#include <pneuma/core/threads.h>
 
 #include <filesystem>
 #include <fstream>
@@ -46,6 +47,7 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const MPI_Comm                           comm = MPI_COMM_WORLD;
   const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+  pneuma::set_thread_counts(comm);
 
   std::string              file;
   std::vector<std::string> overrides;

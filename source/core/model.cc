@@ -230,9 +230,22 @@ namespace pneuma
     SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
     solver.reset();
     tangent.reinit(owned, owned, dsp, comm);
-    laplacian.reinit(owned, owned, dsp, comm);
+    laplacian.clear();
+    laplacian_ready = false;
+  }
+
+  void
+  Model::ensure_laplacian()
+  {
+    // Built when a shift or the continuation needs it and freed after
+    // the solve that used it: a matrix of the tangent's size that most
+    // runs need once (the stiffened start) or never.
+    if (laplacian_ready)
+      return;
+    laplacian.reinit(tangent);
     for (const auto &s : subsystems)
       s->add_regularisation(update_constraints, laplacian);
+    laplacian_ready = true;
   }
 
   // ------------------------------------------------------------------
@@ -564,7 +577,7 @@ namespace pneuma
   void
   Model::assemble_mass(LA::SparseMatrix &M) const
   {
-    M.reinit(laplacian);
+    M.reinit(tangent);
     M = 0.;
     for (const auto &s : subsystems)
       s->add_mass(update_constraints, M);
@@ -712,8 +725,11 @@ namespace pneuma
       TimerOutput::Scope t(*timers, "linear solve");
       if (shift > 0.)
         {
+          ensure_laplacian();
           tangent.add(shift, laplacian);
           tangent_is_current = false;
+          laplacian.clear();
+          laplacian_ready = false;
         }
       solver.factorize(tangent);
       factorized_field = assembled_state.field;
@@ -728,6 +744,7 @@ namespace pneuma
   {
     // The first subsystem that proposes a shift sets it (the membrane
     // when there is one: stiff cables must not slow its continuation).
+    ensure_laplacian();
     for (const auto &s : subsystems)
       {
         const double shift = s->initial_shift(
@@ -761,6 +778,7 @@ namespace pneuma
   Model::laplacian_vmult(const solvers::BorderedVector &x,
                          solvers::BorderedVector       &y)
   {
+    ensure_laplacian();
     laplacian.vmult(y.field, x.field);
     // Rows of dependent and prescribed dofs carry only the diagonal that
     // the condensation leaves; the residual has no such rows, and neither
@@ -768,6 +786,18 @@ namespace pneuma
     // that no update can remove).
     update_constraints.set_zero(y.field);
     y.border.reinit(x.border.size());
+  }
+
+  double
+  Model::start_prestress()
+  {
+    for (const auto &s : subsystems)
+      {
+        const double force = s->start_prestress(external);
+        if (force > 0.)
+          return force;
+      }
+    return 0.;
   }
 
   double

@@ -2,6 +2,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <iostream>
+#include <regex>
 #include <sstream>
 
 #include <pneuma/core/input_error.h>
@@ -201,11 +202,39 @@ namespace pneuma
       prm.leave_subsection();
     }
 
+    namespace
+    {
+      /// Does the expression of function subsection @p name use one of
+      /// its first three (spatial) variable names?
+      bool
+      depends_on_position(ParameterHandler &prm, const std::string &name)
+      {
+        prm.enter_subsection(name);
+        const std::string expression = prm.get("Function expression");
+        const auto        variables =
+          Utilities::split_string_list(prm.get("Variable names"), ',');
+        prm.leave_subsection();
+        const std::regex identifier("[A-Za-z_][A-Za-z_0-9]*");
+        for (auto it = std::sregex_iterator(expression.begin(),
+                                            expression.end(),
+                                            identifier);
+             it != std::sregex_iterator();
+             ++it)
+          for (unsigned int d = 0;
+               d < std::min<std::size_t>(3, variables.size());
+               ++d)
+            if (it->str() == variables[d])
+              return true;
+        return false;
+      }
+    } // namespace
+
     void
     Loads::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Loads");
       parse_function(prm, *pressure_function, "Pressure", "Loads/Pressure");
+      pressure_uniform = !depends_on_position(prm, "Pressure");
       const auto pr =
         parse_id_list(pressure_regions_text, "Loads/Pressure regions");
       pressure_ids = std::set<types::material_id>(pr.begin(), pr.end());

@@ -6,6 +6,9 @@
 #include <pneuma/membrane/membrane_assembler.h>
 #include <pneuma/membrane/surface_kinematics.h>
 
+#include <algorithm>
+#include <array>
+
 namespace pneuma
 {
   namespace membrane
@@ -28,25 +31,17 @@ namespace pneuma
       mapping     = &mapping_;
       dof_handler = &dof_handler_;
       degree      = degree_;
+      reference.reset();
     }
 
-    namespace
+    const ReferenceGeometry &
+    MembraneAssembler::reference_geometry() const
     {
-      /// Outward orientation of a cell from its quadrature data.
-      double
-      cell_orientation(const geometry::SceneGenerator &geometry,
-                       const FEValues<2, 3>           &fe_values)
-      {
-        Point<3>     x;
-        Tensor<1, 3> n;
-        for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
-          {
-            x += fe_values.quadrature_point(q) / fe_values.n_quadrature_points;
-            n += fe_values.normal_vector(q);
-          }
-        return geometry.orientation(x, n);
-      }
-    } // namespace
+      if (!reference)
+        reference = std::make_unique<ReferenceGeometry>(
+          geometry, materials, *mapping, *dof_handler, degree);
+      return *reference;
+    }
 
     void
     MembraneAssembler::assemble(const LA::Vector                &u,
@@ -77,10 +72,7 @@ namespace pneuma
       std::vector<types::global_dof_index> dof_indices(n_dofs);
       std::vector<double>                  local_u(n_dofs);
 
-      std::vector<unsigned int>          component(n_dofs);
-      std::vector<std::array<double, 2>> dN(n_dofs);
-      std::vector<double>                N(n_dofs);
-      std::vector<SymmetricTensor<2, 2>> B(n_dofs), DB(n_dofs);
+      std::vector<unsigned int> component(n_dofs);
       for (unsigned int i = 0; i < n_dofs; ++i)
         component[i] = fe.system_to_component_index(i).first;
 
@@ -94,14 +86,47 @@ namespace pneuma
         loaded && loads.has_gravity() ? loads.gravity(t) : Tensor<1, 3>();
 
 
+      const ReferenceGeometry &ref    = reference_geometry();
+      const unsigned int       n_node = ref.n_nodes();
+      const bool               direct = want_matrix
+                          && positions.update(*request.tangent,
+                                              ref.dof_indices(0),
+                                              ref.n_cells(),
+                                              n_dofs);
+      double *residual_values = direct && request.residual
+                                  ? positions.local_values(*request.residual)
+                                  : nullptr;
+      double *external_values = direct && request.external
+                                  ? positions.local_values(*request.external)
+                                  : nullptr;
+      // A pressure that does not depend on the position is evaluated once.
+      const bool   uniform_pressure = loaded && loads.pressure_is_uniform();
+      const double pressure_value =
+        uniform_pressure ? loads.pressure(Point<3>(), t) : 0.;
+      // dof_of[a][c]: the cell dof of node a, component c.
+      std::vector<std::array<unsigned int, 3>> dof_of(n_node);
+      for (unsigned int i = 0; i < n_dofs; ++i)
+        dof_of[ref.node(i)][ref.component(i)] = i;
+      std::vector<std::array<double, 3>> u_node(n_node), DP(n_node), DQ(n_node);
+      std::vector<std::array<double, 2>> tau(n_node);
+      // Node-ordered material + geometric (upper node blocks) and pressure
+      // parts of the cell matrix.
+      std::vector<double> K_node(n_dofs * n_dofs), P_node(n_dofs * n_dofs);
+
+      unsigned int k = 0;
       for (const auto &cell : dof_handler->active_cell_iterators())
         {
           if (!cell->is_locally_owned())
             continue;
-          fe_values.reinit(cell);
-          cell->get_dof_indices(dof_indices);
+          const unsigned int             cell_index = k++;
+          const types::global_dof_index *cell_dofs =
+            ref.dof_indices(cell_index);
+          std::copy(cell_dofs, cell_dofs + n_dofs, dof_indices.begin());
           for (unsigned int i = 0; i < n_dofs; ++i)
-            local_u[i] = u[dof_indices[i]];
+            {
+              local_u[i]                            = u[dof_indices[i]];
+              u_node[ref.node(i)][ref.component(i)] = local_u[i];
+            }
           cell_matrix   = 0;
           cell_residual = 0;
           cell_external = 0;
@@ -109,91 +134,145 @@ namespace pneuma
           const RegionMaterial &material =
             loaded ? materials[cell->material_id()]
                    : form_finding_laws.at(cell->material_id());
-          const double       H    = material.thickness;
-          const Tensor<1, 3> warp = material.warp(geometry, cell);
-          const double       sign = cell_orientation(geometry, fe_values);
-          const bool         pressurised =
+          const double H = material.thickness;
+          const bool   pressurised =
             loaded && loads.pressure_acts_on(cell->material_id());
 
           for (unsigned int q = 0; q < n_q; ++q)
             {
-              const TangentFrame frame =
-                tangent_frame(sign * fe_values.normal_vector(q), warp);
-              Tensor<2, 3> Gu;
-              for (unsigned int i = 0; i < n_dofs; ++i)
+              const auto   &P  = ref.point(cell_index, q);
+              const auto   *dN = ref.shape_derivatives(cell_index, q);
+              const double *N  = ref.shape_values(q);
+              // a_alpha = E_alpha + sum_a u_a dN_a/dS_alpha.
+              Tensor<1, 3> a0, a1;
+              for (unsigned int d = 0; d < 3; ++d)
                 {
-                  const Tensor<1, 3> grad =
-                    fe_values.shape_grad_component(i, q, component[i]);
-                  dN[i][0] = grad * frame.e[0];
-                  dN[i][1] = grad * frame.e[1];
-                  N[i] = fe_values.shape_value_component(i, q, component[i]);
-                  for (unsigned int d = 0; d < 3; ++d)
-                    Gu[component[i]][d] += local_u[i] * grad[d];
+                  a0[d] = P.E[0][d];
+                  a1[d] = P.E[1][d];
                 }
-              const auto                  a = deformed_tangents(frame, Gu);
-              const SymmetricTensor<2, 2> C = right_cauchy_green(a);
-              SymmetricTensor<2, 2>       S;
-              SymmetricTensor<4, 2>       D;
+              for (unsigned int a = 0; a < n_node; ++a)
+                for (unsigned int d = 0; d < 3; ++d)
+                  {
+                    a0[d] += u_node[a][d] * dN[a][0];
+                    a1[d] += u_node[a][d] * dN[a][1];
+                  }
+              SymmetricTensor<2, 2> C;
+              C[0][0] = a0 * a0;
+              C[0][1] = a0 * a1;
+              C[1][1] = a1 * a1;
+              SymmetricTensor<2, 2> S;
+              SymmetricTensor<4, 2> D;
               material.law->evaluate(C, S, D);
-              const double dA = fe_values.JxW(q);
+              const double dA  = P.JxW;
+              const double HdA = H * dA;
 
-              const Point<3>    &X = fe_values.quadrature_point(q);
-              const double       p = pressurised ? loads.pressure(X, t) : 0.;
-              const Tensor<1, 3> area_vector = cross_product_3d(a[0], a[1]);
+              const Point<3>     X(P.X[0], P.X[1], P.X[2]);
+              const double       p           = !pressurised       ? 0.
+                                               : uniform_pressure ? pressure_value
+                                                                  : loads.pressure(X, t);
+              const Tensor<1, 3> area_vector = cross_product_3d(a0, a1);
               Tensor<1, 3>       dead_load   = material.density * H * g;
               if (loaded && loads.has_surface_load())
                 dead_load += loads.surface_load(X, t);
 
-              for (unsigned int i = 0; i < n_dofs; ++i)
+              // tau_a = S grad_S N_a: the internal force of node a is
+              // H (tau_a0 a_0 + tau_a1 a_1) dA.
+              for (unsigned int a = 0; a < n_node; ++a)
                 {
-                  const unsigned int c = component[i];
-                  B[i][0][0]           = a[0][c] * dN[i][0];
-                  B[i][1][1]           = a[1][c] * dN[i][1];
-                  B[i][0][1] = 0.5 * (a[0][c] * dN[i][1] + a[1][c] * dN[i][0]);
-                  if (want_vector)
+                  tau[a][0] = S[0][0] * dN[a][0] + S[0][1] * dN[a][1];
+                  tau[a][1] = S[0][1] * dN[a][0] + S[1][1] * dN[a][1];
+                }
+              if (want_vector)
+                for (unsigned int a = 0; a < n_node; ++a)
+                  for (unsigned int c = 0; c < 3; ++c)
                     {
-                      const double f_ext =
-                        (p * area_vector[c] + dead_load[c]) * N[i] * dA;
-                      cell_residual(i) += H * (S * B[i]) * dA - f_ext;
+                      const unsigned int i = dof_of[a][c];
+                      const double       f_ext =
+                        (p * area_vector[c] + dead_load[c]) * N[a] * dA;
+                      cell_residual(i) +=
+                        HdA * (tau[a][0] * a0[c] + tau[a][1] * a1[c]) - f_ext;
                       cell_external(i) += f_ext;
                     }
-                }
-
               if (!want_matrix)
                 continue;
-              // Derivatives of a_1 x a_2 along unit displacement of
-              // component d: e_d x a_2 (via a_1) and a_1 x e_d (via a_2).
-              std::array<Tensor<1, 3>, 3> e_x_a2, a1_x_e;
-              for (unsigned int d = 0; d < 3; ++d)
-                {
-                  Tensor<1, 3> e_d;
-                  e_d[d]    = 1.;
-                  e_x_a2[d] = cross_product_3d(e_d, a[1]);
-                  a1_x_e[d] = cross_product_3d(a[0], e_d);
-                }
-              for (unsigned int j = 0; j < n_dofs; ++j)
-                DB[j] = D * B[j];
-              for (unsigned int i = 0; i < n_dofs; ++i)
-                {
-                  const unsigned int ci = component[i];
-                  for (unsigned int j = 0; j < n_dofs; ++j)
-                    {
-                      const unsigned int cj = component[j];
-                      double             k  = H * (B[i] * DB[j]);
-                      if (ci == cj)
-                        k +=
-                          H
-                          * (dN[i][0]
-                               * (S[0][0] * dN[j][0] + S[0][1] * dN[j][1])
-                             + dN[i][1]
-                                 * (S[1][0] * dN[j][0] + S[1][1] * dN[j][1]));
-                      if (p != 0.)
-                        k -= p * N[i]
-                             * (dN[j][0] * e_x_a2[cj][ci]
-                                + dN[j][1] * a1_x_e[cj][ci]);
-                      cell_matrix(i, j) += k * dA;
-                    }
-                }
+
+              // Material part in Voigt form: the strain of dof (a, c) is
+              // a0[c] P_a + a1[c] Q_a with P_a = (dN_a0, 0, dN_a1) and
+              // Q_a = (0, dN_a1, dN_a0) (components E11, E22, 2 E12).
+              const double Dv[3][3] = {
+                {D[0][0][0][0], D[0][0][1][1], D[0][0][0][1]},
+                {D[1][1][0][0], D[1][1][1][1], D[1][1][0][1]},
+                {D[0][1][0][0], D[0][1][1][1], D[0][1][0][1]}};
+              for (unsigned int b = 0; b < n_node; ++b)
+                for (unsigned int r = 0; r < 3; ++r)
+                  {
+                    DP[b][r] = Dv[r][0] * dN[b][0] + Dv[r][2] * dN[b][1];
+                    DQ[b][r] = Dv[r][1] * dN[b][1] + Dv[r][2] * dN[b][0];
+                  }
+              // The material and geometric parts are symmetric: pairs
+              // b >= a, mirrored.
+              for (unsigned int a = 0; a < n_node; ++a)
+                for (unsigned int b = a; b < n_node; ++b)
+                  {
+                    // P_a . D P_b etc.
+                    const double m00 =
+                      dN[a][0] * DP[b][0] + dN[a][1] * DP[b][2];
+                    const double m01 =
+                      dN[a][0] * DQ[b][0] + dN[a][1] * DQ[b][2];
+                    const double m10 =
+                      dN[a][1] * DP[b][1] + dN[a][0] * DP[b][2];
+                    const double m11 =
+                      dN[a][1] * DQ[b][1] + dN[a][0] * DQ[b][2];
+                    const double geometric =
+                      HdA * (dN[a][0] * tau[b][0] + dN[a][1] * tau[b][1]);
+                    for (unsigned int c = 0; c < 3; ++c)
+                      {
+                        const double x0 = HdA * (a0[c] * m00 + a1[c] * m10);
+                        const double x1 = HdA * (a0[c] * m01 + a1[c] * m11);
+                        double *row     = &K_node[(3 * a + c) * n_dofs + 3 * b];
+                        for (unsigned int d = 0; d < 3; ++d)
+                          row[d] += x0 * a0[d] + x1 * a1[d];
+                        row[c] += geometric;
+                      }
+                  }
+              if (p != 0.)
+                for (unsigned int a = 0; a < n_node; ++a)
+                  {
+                    // Follower pressure: -p N_a eps_cdk w_k with
+                    // w = dN_b0 a_1 - dN_b1 a_0.
+                    const double s = p * N[a] * dA;
+                    for (unsigned int b = 0; b < n_node; ++b)
+                      {
+                        const Tensor<1, 3> w =
+                          s * (dN[b][0] * a1 - dN[b][1] * a0);
+                        double *r0 = &P_node[(3 * a) * n_dofs + 3 * b];
+                        double *r1 = r0 + n_dofs, *r2 = r1 + n_dofs;
+                        r0[1] -= w[2];
+                        r0[2] += w[1];
+                        r1[0] += w[2];
+                        r1[2] -= w[0];
+                        r2[0] -= w[1];
+                        r2[1] += w[0];
+                      }
+                  }
+            }
+          if (want_matrix)
+            {
+              // Mirror the upper node blocks and add the pressure part, in
+              // the cell's dof order.
+              for (unsigned int a = 0; a < n_node; ++a)
+                for (unsigned int b = 0; b < n_node; ++b)
+                  for (unsigned int c = 0; c < 3; ++c)
+                    for (unsigned int d = 0; d < 3; ++d)
+                      {
+                        const double k =
+                          (b >= a ? K_node[(3 * a + c) * n_dofs + 3 * b + d]
+                                  : K_node[(3 * b + d) * n_dofs + 3 * a + c])
+                          + P_node[(3 * a + c) * n_dofs + 3 * b + d];
+                        cell_matrix(dof_of[a][c], dof_of[b][d]) = k;
+                      }
+              std::fill(K_node.begin(), K_node.end(), 0.);
+              std::fill(P_node.begin(), P_node.end(), 0.);
             }
 
           // Dead line loads on listed boundaries.
@@ -223,20 +302,49 @@ namespace pneuma
                 }
 
           if (request.cell_terms)
-            request.cell_terms(cell,
-                               fe_values,
-                               local_u,
-                               want_matrix ? &cell_matrix : nullptr,
-                               request.residual ? &cell_residual : nullptr,
-                               dof_indices);
+            {
+              fe_values.reinit(cell);
+              request.cell_terms(cell,
+                                 fe_values,
+                                 local_u,
+                                 want_matrix ? &cell_matrix : nullptr,
+                                 request.residual ? &cell_residual : nullptr,
+                                 dof_indices);
+            }
 
-          LA::distribute(constraints,
-                         cell_matrix,
-                         cell_residual,
-                         dof_indices,
-                         want_matrix ? request.tangent : nullptr,
-                         request.residual);
-          if (request.external)
+          // Cells without constraints and with owned rows add their matrix
+          // at the precomputed positions.
+          bool fast = direct && positions.direct(cell_index);
+          for (unsigned int i = 0; fast && i < n_dofs; ++i)
+            fast = !constraints.is_constrained(dof_indices[i]);
+          if (fast)
+            {
+              positions.add(cell_index, &cell_matrix(0, 0));
+              if (residual_values)
+                positions.add_vector(cell_index,
+                                     cell_residual.data(),
+                                     residual_values);
+              else if (request.residual)
+                constraints.distribute_local_to_global(cell_residual,
+                                                       dof_indices,
+                                                       *request.residual);
+              if (external_values)
+                positions.add_vector(cell_index,
+                                     cell_external.data(),
+                                     external_values);
+              else if (request.external)
+                constraints.distribute_local_to_global(cell_external,
+                                                       dof_indices,
+                                                       *request.external);
+            }
+          else
+            LA::distribute(constraints,
+                           cell_matrix,
+                           cell_residual,
+                           dof_indices,
+                           want_matrix ? request.tangent : nullptr,
+                           request.residual);
+          if (request.external && !fast)
             constraints.distribute_local_to_global(cell_external,
                                                    dof_indices,
                                                    *request.external);

@@ -2,6 +2,7 @@
 #include <deal.II/distributed/solution_transfer.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q_cache.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
@@ -633,6 +634,47 @@ namespace pneuma
       // the membrane sets the scale (stiff cables must not slow its
       // continuation down).
       return factor * model.diagonal_ratio(range, K, L, constraints);
+    }
+
+    double
+    MembraneSubsystem::start_prestress(const LA::Vector &external) const
+    {
+      // Virial of the applied loads: in equilibrium
+      // int tr N dA = sum_i x_i . f_i (reactions included), so the mean
+      // isotropic membrane force is about sum (x_i - c) . f_i / (2 A) over
+      // the free dofs and the deformable cells (the reactions of supports
+      // and rigid plates are unknown here and left out). Exact for a
+      // closed, pressurised sphere (pR/2); the axial force pR/2 of a
+      // cylinder between plates.
+      std::map<types::global_dof_index, Point<3>> support;
+      const Point<3> centre      = support_centroid(support);
+      const auto    &constraints = model.constraints();
+      double         virial      = 0.;
+      for (unsigned int c = 0; c < 3; ++c)
+        {
+          std::vector<bool> mask(3, false);
+          mask[c] = true;
+          for (const auto i : DoFTools::extract_dofs(dofs, ComponentMask(mask)))
+            if (!constraints.is_constrained(i))
+              virial += (support.at(i)[c] - centre[c]) * external[i];
+        }
+      const auto      rigid = rigid_regions.all_ids();
+      const QGauss<2> quadrature(fe_degree + 1);
+      FEValues<2, 3>  fe_values(*mapping_cache,
+                               dofs.get_fe(),
+                               quadrature,
+                               update_JxW_values);
+      double          area = 0.;
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned() && !rigid.count(cell->material_id()))
+          {
+            fe_values.reinit(cell);
+            for (unsigned int q = 0; q < quadrature.size(); ++q)
+              area += fe_values.JxW(q);
+          }
+      virial = Utilities::MPI::sum(virial, comm);
+      area   = Utilities::MPI::sum(area, comm);
+      return area > 0. ? std::max(0., virial / (2. * area)) : 0.;
     }
 
     void

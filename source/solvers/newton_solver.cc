@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <regex>
 
 namespace pneuma
@@ -25,6 +26,9 @@ namespace pneuma
       /// is within this factor of the tolerance (a penalty beside a
       /// prestressed cable).
       constexpr double floor_descent = 1e2;
+      /// The predicted-update test trusts the quadratic model only once
+      /// the updates contract at least this fast.
+      constexpr double contraction = 0.1;
       /// Inexact Newton forcing: eta = min(max_forcing, forcing_ratio
       /// |r|/|r_ref|).
       constexpr double max_forcing = 1e-3, forcing_ratio = 1e-2;
@@ -174,6 +178,14 @@ namespace pneuma
                         "A step to a non-finite residual or one raising it "
                         "more than 1e6-fold is never taken.",
                         Patterns::Integer(0, 20));
+      prm.add_parameter("Stiffened start",
+                        stiffened_start,
+                        "From an unstressed state, solve the first "
+                        "iteration with the geometric stiffness of the mean "
+                        "membrane force that the virial of the loads "
+                        "predicts, so that the linear solution does not "
+                        "kink the surface at supports (fewer iterations on "
+                        "fine meshes). Kept only if it lowers |r|.");
       prm.add_parameter("Regularisation factor",
                         shift_factor,
                         "First continuation shift, relative to "
@@ -234,6 +246,9 @@ namespace pneuma
       Watchdog     watchdog(line_search ? watchdog_steps : 0);
       // Block norms of the first residual, for the table.
       std::vector<double> block_reference;
+      // |du| of the last full, unwatched step (0: none), for the
+      // predicted-update test.
+      double last_full_update = 0.;
 
       // The caller's assembly at u serves the first iteration (unshifted).
       double r_norm = 0.;
@@ -376,10 +391,36 @@ namespace pneuma
           u        = u_trial;
           residual = trial;
           r_norm   = step.norm;
+          // The next update of a quadratic iteration, |du_{k+1}| ~
+          // C |du_k|^2 with C = |du_k|/|du_{k-1}|^2 from the last two full
+          // steps: once it is below the update tolerance the state is as
+          // accurate as the update test would find it, without the
+          // factorization that computes it.
+          const bool full = step.alpha == 1. && !step.watched;
+          if (pure && full && last_full_update > 0.
+              && du_norm <= contraction * last_full_update && r_norm > tolerance
+              && r_norm <= floor_update * tolerance
+              && du_norm * du_norm * du_norm <= update_tolerance * u.l2_norm()
+                                                  * last_full_update
+                                                  * last_full_update)
+            {
+              if (print_table)
+                out << "    (the next update is predicted at |du|/|u| = "
+                    << std::scientific << std::setprecision(3)
+                    << du_norm * du_norm * du_norm
+                         / (last_full_update * last_full_update
+                            * std::max(u.l2_norm(), 1e-300))
+                    << std::defaultfloat << ")\n";
+              result.residual_history.push_back(r_norm);
+              result.convergence_test = "update predicted below tolerance";
+              return true;
+            }
+          last_full_update = full ? du_norm : 0.;
           if (watchdog.failed(r_norm))
             {
-              u      = watchdog.saved_state();
-              r_norm = evaluate(u, residual);
+              u                = watchdog.saved_state();
+              r_norm           = evaluate(u, residual);
+              last_full_update = 0.;
               if (print_table)
                 out << "    (watchdog: back to |r|/|r_ref| = "
                     << std::scientific << std::setprecision(3) << r_norm / r_ref
@@ -432,6 +473,52 @@ namespace pneuma
       return true;
     }
 
+    void
+    NewtonSolver::stiffened_first_iteration(NonlinearProblem         &problem,
+                                            BorderedVector           &u,
+                                            BorderedVector           &r,
+                                            const double              r_ref,
+                                            const ConditionalOStream &out,
+                                            NewtonResult &result) const
+    {
+      const double s = problem.start_prestress();
+      if (!(s > 0.) || !std::isfinite(s))
+        return;
+      const double   r_norm = r.l2_norm();
+      BorderedVector du(u), rhs(r), u_trial(u), trial(r);
+      rhs *= -1.;
+      du = 0.;
+      try
+        {
+          problem.solve_linear(s, rhs, du);
+        }
+      catch (const std::exception &)
+        {
+          problem.assemble(u, r); // the tangent at u again
+          return;
+        }
+      ++result.iterations;
+      u_trial.add(1., du);
+      const double norm =
+        std::isfinite(du.l2_norm())
+          ? (problem.assemble(u_trial, trial), trial.l2_norm())
+          : std::numeric_limits<double>::infinity();
+      const bool kept = std::isfinite(norm) && norm < r_norm;
+      if (print_table)
+        out << "    " << std::setw(4) << result.iterations << std::scientific
+            << std::setprecision(3) << "  " << norm / r_ref
+            << "  (stiffened start, s = " << s << " N/m"
+            << (kept ? ")" : ": not kept)") << std::defaultfloat << std::endl;
+      if (kept)
+        {
+          u = u_trial;
+          r = trial;
+          result.residual_history.push_back(norm);
+        }
+      else
+        problem.assemble(u, r);
+    }
+
     NewtonResult
     NewtonSolver::solve(NonlinearProblem         &problem,
                         BorderedVector           &u,
@@ -457,6 +544,8 @@ namespace pneuma
       newton.max_iterations = max_iter;
       newton.tolerance      = residual_tolerance;
       const BorderedVector u_start(u);
+      if (allow_continuation && stiffened_start)
+        stiffened_first_iteration(problem, u, r, r_ref, out, result);
       if (iterate(problem, u, newton, r_ref, out, result, &r))
         {
           result.converged = true;

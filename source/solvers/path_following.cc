@@ -213,6 +213,12 @@ namespace pneuma
     }
 
     double
+    PathConstraintProblem::start_prestress()
+    {
+      return model.start_prestress();
+    }
+
+    double
     PathConstraintProblem::load_norm()
     {
       return model.load_norm();

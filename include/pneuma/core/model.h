@@ -308,11 +308,17 @@ namespace pneuma
                  solvers::BorderedVector       &du) override;
     double
     initial_shift(const double factor) override;
+    /// Assemble the regularisation matrix L (the subsystems'
+    /// add_regularisation) with the tangent's sparsity, unless it is.
+    void
+    ensure_laplacian();
     void
     laplacian_vmult(const solvers::BorderedVector &x,
                     solvers::BorderedVector       &y) override;
     double
     load_norm() override;
+    double
+    start_prestress() override;
     void
     set_linear_tolerance(const double eta) override
     {
@@ -440,7 +446,9 @@ namespace pneuma
     /// Some rank has kinematic constraints (the same on every rank).
     bool             any_kinematic = false;
     LA::SparseMatrix tangent, laplacian;
-    LA::Vector       external, ghosted;
+    /// The regularisation matrix is assembled (ensure_laplacian()).
+    bool       laplacian_ready = false;
+    LA::Vector external, ghosted;
     /// support_residual() of the last add_statistics().
     LA::Vector support_forces;
     /// unconstrained_residual() of the last add_statistics().

@@ -218,6 +218,20 @@ namespace pneuma
       return 0.;
     }
 
+    /**
+     * Newton's stiffened start (solvers/newton_solver.h): an isotropic
+     * membrane force (N/m) estimated from the applied loads @p external
+     * (owned), whose geometric stiffness makes the first solve from an
+     * unstressed state well posed and free of the linear solution's kinks;
+     * 0: no proposal (the first proposal in subsystem order is taken).
+     */
+    virtual double
+    start_prestress(const LA::Vector &external) const
+    {
+      (void)external;
+      return 0.;
+    }
+
     /// Adaptive refinement: cycles after the first run (0: none).
     virtual unsigned int
     refinement_cycles() const

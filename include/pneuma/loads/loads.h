@@ -52,6 +52,13 @@ namespace pneuma
       /// Follower pressure [Pa] at reference point @p x and pseudo time @p t.
       double
       pressure(const Point<3> &x, const double t) const;
+      /// The pressure expression does not depend on x, y, z (it is
+      /// evaluated once per assembly instead of per quadrature point).
+      bool
+      pressure_is_uniform() const
+      {
+        return pressure_uniform;
+      }
       /// True if the pressure acts on cells of material @p material_id.
       bool
       pressure_acts_on(const types::material_id material_id) const;
@@ -87,6 +94,8 @@ namespace pneuma
       }
 
     private:
+      /// The pressure expression does not use the position.
+      bool                                          pressure_uniform = false;
       std::unique_ptr<Functions::ParsedFunction<3>> pressure_function;
       std::unique_ptr<Functions::ParsedFunction<3>> gravity_function;
       std::unique_ptr<Functions::ParsedFunction<3>> surface_function;

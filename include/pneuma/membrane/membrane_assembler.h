@@ -23,12 +23,15 @@
 #include <deal.II/lac/vector.h>
 
 #include <pneuma/core/linear_algebra.h>
+#include <pneuma/core/matrix_positions.h>
 #include <pneuma/geometry/scene_generator.h>
 #include <pneuma/loads/loads.h>
 #include <pneuma/membrane/constitutive_law.h>
+#include <pneuma/membrane/reference_geometry.h>
 
 #include <functional>
 #include <map>
+#include <memory>
 #include <vector>
 
 namespace pneuma
@@ -122,6 +125,10 @@ namespace pneuma
       }
 
     private:
+      /// The reference data of the current mesh (built at first use).
+      const ReferenceGeometry &
+      reference_geometry() const;
+
       const geometry::SceneGenerator              &geometry;
       const MaterialRegions                       &materials;
       const loads::Loads                          &loads;
@@ -129,6 +136,8 @@ namespace pneuma
       const DoFHandler<2, 3>                      *dof_handler = nullptr;
       unsigned int                                 degree      = 1;
       std::map<types::material_id, RegionMaterial> form_finding_laws;
+      mutable std::unique_ptr<ReferenceGeometry>   reference;
+      mutable LA::MatrixPositions                  positions;
     };
   } // namespace membrane
 } // namespace pneuma

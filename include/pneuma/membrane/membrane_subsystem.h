@@ -112,6 +112,10 @@ namespace pneuma
       void
       add_sparsity(DynamicSparsityPattern          &dsp,
                    const AffineConstraints<double> &constraints) const override;
+      /// The virial estimate sum (x_i - c).f_i / (2 A) of the mean
+      /// membrane force (doc/theory.md "Stiffened start").
+      double
+      start_prestress(const LA::Vector &external) const override;
       void
       add_regularisation(const AffineConstraints<double> &constraints,
                          LA::SparseMatrix                &L) const override;

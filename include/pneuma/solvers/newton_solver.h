@@ -23,13 +23,24 @@
  *   gone at convergence: the converged state is the exact equilibrium and
  *   the final rate is quadratic.
  *
- * Convergence is declared by one of three named tests (NewtonResult::
+ * - **Stiffened start** from an unstressed state: the first solve uses
+ *   \f$K + s L\f$ with the mean membrane force \f$s\f$ that the virial of
+ *   the loads predicts (NonlinearProblem::start_prestress), instead of
+ *   the bare linear stiffness whose solution kinks the surface where a
+ *   membrane meets a support (the nonlinear boundary layer is thinner
+ *   than the cells). Newton goes on from there; the start is kept only if
+ *   it lowers |r|.
+ *
+ * Convergence is declared by one of four named tests (NewtonResult::
  * convergence_test): "residual" (|r| <= tol |r_ref|), "update at the
  * round-off floor" (|du| <= tol_u |u| while |r| is within `floor_update`
- * of the tolerance) or "no descent at the round-off floor" (no step reduces
- * |r| while it is within `floor_descent` of the tolerance). The reference
- * is \f$|r_{ref}| = \max(|r_0|, |f|)\f$ with the problem's force scale
- * |f|. The table prints, per iteration, the total residual and each block
+ * of the tolerance), "update predicted below tolerance" (the same, with
+ * the next update predicted from the last two full steps of a quadratic
+ * iteration, |du_{k+1}| ~ |du_k|^3/|du_{k-1}|^2, so that no factorization
+ * is spent to confirm it) or "no descent at the round-off floor" (no step
+ * reduces |r| while it is within `floor_descent` of the tolerance). The
+ * reference is \f$|r_{ref}| = \max(|r_0|, |f|)\f$ with the problem's force
+ * scale |f|. The table prints, per iteration, the total residual and each block
  * (membrane, cables, chambers, ...) normalized by its value at the first
  * iteration.
  */
@@ -71,6 +82,15 @@ namespace pneuma
       /// y = L x with the regularisation matrix L (zero on the border).
       virtual void
       laplacian_vmult(const BorderedVector &x, BorderedVector &y) = 0;
+      /**
+       * The isotropic membrane force s (N/m) of the stiffened start: the
+       * first solve from an unstressed state uses K + s L. 0: none.
+       */
+      virtual double
+      start_prestress()
+      {
+        return 0.;
+      }
       /// Force scale of the loads, for the residual reference.
       virtual double
       load_norm() = 0;
@@ -173,6 +193,16 @@ namespace pneuma
               NewtonResult             &result,
               const BorderedVector     *assembled = nullptr) const;
 
+      /// The stiffened start: u and r (assembled at u) advance by the
+      /// solve with K + s L if that lowers |r|.
+      void
+      stiffened_first_iteration(NonlinearProblem         &problem,
+                                BorderedVector           &u,
+                                BorderedVector           &r,
+                                const double              r_ref,
+                                const ConditionalOStream &out,
+                                NewtonResult             &result) const;
+
       bool
       continuation(NonlinearProblem         &problem,
                    BorderedVector           &u,
@@ -191,6 +221,7 @@ namespace pneuma
       unsigned int max_line_search    = 6;
       unsigned int watchdog_steps     = 3;
       bool         line_search        = true;
+      bool         stiffened_start    = true;
       bool         print_table        = true;
     };
   } // namespace solvers

@@ -146,6 +146,8 @@ namespace pneuma
       laplacian_vmult(const BorderedVector &x, BorderedVector &y) override;
       double
       load_norm() override;
+      double
+      start_prestress() override;
       void
       set_linear_tolerance(const double eta) override;
       bool

@@ -1,0 +1,112 @@
+#pragma once
+
+/**
+ * @file
+ * Cell matrices added straight into a Trilinos matrix's value array
+ * (issue 17): the position of every (row, column) pair of a cell in the
+ * compressed rows is found once per sparsity pattern by binary search, so
+ * an assembly adds a cell matrix with one indexed addition per entry
+ * instead of a global-to-local lookup and a search per entry
+ * (AffineConstraints::distribute_local_to_global into
+ * Epetra_FECrsMatrix::SumIntoGlobalValues).
+ *
+ * Only cells whose rows are all locally owned take this path, and the
+ * caller must also check that none of their dofs is constrained; the
+ * others go through the constraints as before. The positions are
+ * rebuilt whenever the matrix's arrays change (a new sparsity pattern):
+ * the key holds the addresses and sizes of the row offsets, column
+ * indices and values and a checksum of the column indices.
+ */
+
+#include <pneuma/core/linear_algebra.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace pneuma
+{
+  namespace LA
+  {
+    class MatrixPositions
+    {
+    public:
+      /**
+       * Make the positions valid for @p matrix and the @p n_cells cells
+       * whose @p n_dofs dof indices each follow each other in @p dofs
+       * (recomputed only if the matrix's arrays changed). False if the
+       * matrix does not keep its values in one array.
+       */
+      bool
+      update(const SparseMatrix                    &matrix,
+             const dealii::types::global_dof_index *dofs,
+             const unsigned int                     n_cells,
+             const unsigned int                     n_dofs);
+
+      /// Are all rows of cell @p k owned here (direct path possible)?
+      bool
+      direct(const unsigned int k) const
+      {
+        return row_of[std::size_t(k) * n_dofs_per_cell] >= 0;
+      }
+
+      /// Add the n_dofs x n_dofs row-major cell matrix @p m of cell @p k.
+      void
+      add(const unsigned int k, const double *m) const
+      {
+        const int           *rows = &row_of[std::size_t(k) * n_dofs_per_cell];
+        const std::uint16_t *off =
+          &offset_of[std::size_t(k) * n_dofs_per_cell * n_dofs_per_cell];
+        for (unsigned int i = 0; i < n_dofs_per_cell; ++i)
+          {
+            double *row = values + row_start[rows[i]];
+            for (unsigned int j = 0; j < n_dofs_per_cell; ++j)
+              row[off[j]] += m[j];
+            off += n_dofs_per_cell;
+            m += n_dofs_per_cell;
+          }
+      }
+
+      /**
+       * The local values of @p vector if its owned entries are numbered
+       * like the matrix's rows (then add_vector() may write to them),
+       * else nullptr.
+       */
+      double *
+      local_values(Vector &vector) const;
+
+      /// Add the cell vector @p v of cell @p k to the @p local values.
+      void
+      add_vector(const unsigned int k, const double *v, double *local) const
+      {
+        const int *rows = &row_of[std::size_t(k) * n_dofs_per_cell];
+        for (unsigned int i = 0; i < n_dofs_per_cell; ++i)
+          local[rows[i]] += v[i];
+      }
+
+    private:
+      struct Key
+      {
+        const void   *offsets = nullptr, *indices = nullptr, *values = nullptr;
+        long long     n_rows = -1, n_entries = -1;
+        std::uint64_t checksum = 0;
+        unsigned int  n_cells = 0, n_dofs = 0;
+        bool
+        operator==(const Key &o) const
+        {
+          return offsets == o.offsets && indices == o.indices
+                 && values == o.values && n_rows == o.n_rows
+                 && n_entries == o.n_entries && checksum == o.checksum
+                 && n_cells == o.n_cells && n_dofs == o.n_dofs;
+        }
+      };
+      Key              key;
+      unsigned int     n_dofs_per_cell = 0;
+      double          *values          = nullptr;
+      const int       *row_start       = nullptr;
+      std::vector<int> row_of;
+      /// Global indices of the matrix's local rows.
+      std::vector<int>           matrix_rows;
+      std::vector<std::uint16_t> offset_of;
+    };
+  } // namespace LA
+} // namespace pneuma

@@ -1,0 +1,123 @@
+#pragma once
+
+/**
+ * @file
+ * What the membrane kernel needs of the reference surface, computed once
+ * per mesh instead of by FEValues::reinit at every assembly (issue 17,
+ * doc/theory.md §3 "Assembly kernel"): per locally owned cell its dof
+ * indices and orientation, and per quadrature point the orthonormal
+ * material frame (E_1, E_2) of the tangent plane, the derivatives
+ * dN_a/dS_alpha of each node's scalar shape function along it, the
+ * weight JxW and the point X. Shape values N_a(q) are the same on every
+ * cell and are stored once.
+ *
+ * Memory for degree 1 (4 nodes, 4 points): 96 B of dof indices and
+ * 4 x (10 + 8) doubles = 576 B per cell.
+ */
+
+#include <deal.II/base/point.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping.h>
+
+#include <pneuma/geometry/scene_generator.h>
+#include <pneuma/membrane/constitutive_law.h>
+
+#include <array>
+#include <vector>
+
+namespace pneuma
+{
+  namespace membrane
+  {
+    using namespace dealii;
+
+    /// Outward orientation (+1 or -1) of the cell of @p fe_values (reinit'ed
+    /// with quadrature points and normal vectors).
+    double
+    cell_orientation(const geometry::SceneGenerator &geometry,
+                     const FEValues<2, 3>           &fe_values);
+
+    /// Reference data of the locally owned cells, in the order of
+    /// DoFHandler::active_cell_iterators().
+    class ReferenceGeometry
+    {
+    public:
+      /// Quadrature data of one point.
+      struct Point
+      {
+        /// The material frame E_1, E_2 (orthonormal, E_1 x E_2 the outward
+        /// normal, E_1 along the region's warp where it has one).
+        double E[2][3];
+        double JxW;
+        double X[3];
+      };
+
+      /// Compute it for the locally owned cells of @p dof_handler with the
+      /// Gauss rule of degree + 1 points per direction.
+      ReferenceGeometry(const geometry::SceneGenerator &geometry,
+                        const MaterialRegions          &materials,
+                        const Mapping<2, 3>            &mapping,
+                        const DoFHandler<2, 3>         &dof_handler,
+                        const unsigned int              degree);
+
+      unsigned int
+      n_cells() const
+      {
+        return n_owned;
+      }
+      unsigned int
+      n_q_points() const
+      {
+        return n_q;
+      }
+      unsigned int
+      n_nodes() const
+      {
+        return n_node;
+      }
+      /// The cell's dof indices.
+      const types::global_dof_index *
+      dof_indices(const unsigned int cell) const
+      {
+        return &dofs[cell * 3 * n_node];
+      }
+      const Point &
+      point(const unsigned int cell, const unsigned int q) const
+      {
+        return points[cell * n_q + q];
+      }
+      /// dN_a/dS_alpha at point q of the cell: [a][alpha].
+      const std::array<double, 2> *
+      shape_derivatives(const unsigned int cell, const unsigned int q) const
+      {
+        return &derivatives[(cell * n_q + q) * n_node];
+      }
+      /// N_a at point q (the same on every cell).
+      const double *
+      shape_values(const unsigned int q) const
+      {
+        return &values[q * n_node];
+      }
+      /// Node a and component c of cell dof i (FESystem order).
+      unsigned int
+      node(const unsigned int i) const
+      {
+        return node_of[i];
+      }
+      unsigned int
+      component(const unsigned int i) const
+      {
+        return component_of[i];
+      }
+
+    private:
+      unsigned int                         n_owned = 0, n_q = 0, n_node = 0;
+      std::vector<types::global_dof_index> dofs;
+      std::vector<Point>                   points;
+      std::vector<std::array<double, 2>>   derivatives;
+      std::vector<double>                  values;
+      std::vector<unsigned int>            node_of, component_of;
+    };
+  } // namespace membrane
+} // namespace pneuma

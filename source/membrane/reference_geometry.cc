@@ -1,0 +1,111 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <pneuma/membrane/reference_geometry.h>
+#include <pneuma/membrane/surface_kinematics.h>
+
+namespace pneuma
+{
+  namespace membrane
+  {
+    double
+    cell_orientation(const geometry::SceneGenerator &geometry,
+                     const FEValues<2, 3>           &fe_values)
+    {
+      dealii::Point<3> x;
+      Tensor<1, 3>     n;
+      for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+        {
+          x += fe_values.quadrature_point(q) / fe_values.n_quadrature_points;
+          n += fe_values.normal_vector(q);
+        }
+      return geometry.orientation(x, n);
+    }
+
+    ReferenceGeometry::ReferenceGeometry(
+      const geometry::SceneGenerator &geometry,
+      const MaterialRegions          &materials,
+      const Mapping<2, 3>            &mapping,
+      const DoFHandler<2, 3>         &dof_handler,
+      const unsigned int              degree)
+    {
+      const auto     &fe = dof_handler.get_fe();
+      const QGauss<2> quadrature(degree + 1);
+      FEValues<2, 3>  fe_values(mapping,
+                               fe,
+                               quadrature,
+                               update_values | update_gradients
+                                 | update_normal_vectors
+                                 | update_quadrature_points
+                                 | update_JxW_values);
+      n_q                       = quadrature.size();
+      const unsigned int n_dofs = fe.n_dofs_per_cell();
+      n_node                    = n_dofs / 3;
+      node_of.resize(n_dofs);
+      component_of.resize(n_dofs);
+      // The first dof of each node: its scalar shape function.
+      std::vector<unsigned int> first_dof(n_node);
+      for (unsigned int i = 0; i < n_dofs; ++i)
+        {
+          component_of[i] = fe.system_to_component_index(i).first;
+          node_of[i]      = fe.system_to_component_index(i).second;
+          if (component_of[i] == 0)
+            first_dof[node_of[i]] = i;
+        }
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          ++n_owned;
+      dofs.resize(std::size_t(n_owned) * n_dofs);
+      points.resize(std::size_t(n_owned) * n_q);
+      derivatives.resize(std::size_t(n_owned) * n_q * n_node);
+      values.resize(n_q * n_node);
+
+      std::vector<types::global_dof_index> cell_dofs(n_dofs);
+      unsigned int                         k = 0;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          if (!cell->is_locally_owned())
+            continue;
+          fe_values.reinit(cell);
+          cell->get_dof_indices(cell_dofs);
+          std::copy(cell_dofs.begin(),
+                    cell_dofs.end(),
+                    dofs.begin() + std::size_t(k) * n_dofs);
+          const Tensor<1, 3> warp =
+            materials[cell->material_id()].warp(geometry, cell);
+          const double sign = cell_orientation(geometry, fe_values);
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              const TangentFrame frame =
+                tangent_frame(sign * fe_values.normal_vector(q), warp);
+              Point &p = points[std::size_t(k) * n_q + q];
+              for (unsigned int d = 0; d < 3; ++d)
+                {
+                  p.E[0][d] = frame.e[0][d];
+                  p.E[1][d] = frame.e[1][d];
+                  p.X[d]    = fe_values.quadrature_point(q)[d];
+                }
+              p.JxW = fe_values.JxW(q);
+              for (unsigned int a = 0; a < n_node; ++a)
+                {
+                  const Tensor<1, 3> grad =
+                    fe_values.shape_grad_component(first_dof[a], q, 0);
+                  auto &dN =
+                    derivatives[(std::size_t(k) * n_q + q) * n_node + a];
+                  dN[0] = grad * frame.e[0];
+                  dN[1] = grad * frame.e[1];
+                  if (k == 0)
+                    values[q * n_node + a] =
+                      fe_values.shape_value_component(first_dof[a], q, 0);
+                }
+            }
+          ++k;
+        }
+      // Shape values on a rank without cells: from the reference cell.
+      if (n_owned == 0)
+        for (unsigned int q = 0; q < n_q; ++q)
+          for (unsigned int a = 0; a < n_node; ++a)
+            values[q * n_node + a] =
+              fe.shape_value_component(first_dof[a], quadrature.point(q), 0);
+    }
+  } // namespace membrane
+} // namespace pneuma
