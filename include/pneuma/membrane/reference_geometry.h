@@ -80,18 +80,18 @@ namespace pneuma
       const types::global_dof_index *
       dof_indices(const unsigned int cell) const
       {
-        return &dofs[cell * 3 * n_node];
+        return dofs.data() + std::size_t(cell) * 3 * n_node;
       }
       const Point &
       point(const unsigned int cell, const unsigned int q) const
       {
-        return points[cell * n_q + q];
+        return points[std::size_t(cell) * n_q + q];
       }
       /// dN_a/dS_alpha at point q of the cell: [a][alpha].
       const std::array<double, 2> *
       shape_derivatives(const unsigned int cell, const unsigned int q) const
       {
-        return &derivatives[(cell * n_q + q) * n_node];
+        return derivatives.data() + (std::size_t(cell) * n_q + q) * n_node;
       }
       /// N_a at point q (the same on every cell).
       const double *
