@@ -231,7 +231,6 @@ namespace pneuma
     solver.reset();
     tangent.reinit(owned, owned, dsp, comm);
     laplacian.clear();
-    laplacian_ready = false;
   }
 
   void
@@ -240,12 +239,11 @@ namespace pneuma
     // Built when a shift or the continuation needs it and freed after
     // the solve that used it: a matrix of the tangent's size that most
     // runs need once (the stiffened start) or never.
-    if (laplacian_ready)
+    if (laplacian.m() > 0)
       return;
     laplacian.reinit(tangent);
     for (const auto &s : subsystems)
       s->add_regularisation(update_constraints, laplacian);
-    laplacian_ready = true;
   }
 
   // ------------------------------------------------------------------
@@ -729,7 +727,6 @@ namespace pneuma
           tangent.add(shift, laplacian);
           tangent_is_current = false;
           laplacian.clear();
-          laplacian_ready = false;
         }
       solver.factorize(tangent);
       factorized_field = assembled_state.field;

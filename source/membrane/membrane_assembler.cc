@@ -72,10 +72,6 @@ namespace pneuma
       std::vector<types::global_dof_index> dof_indices(n_dofs);
       std::vector<double>                  local_u(n_dofs);
 
-      std::vector<unsigned int> component(n_dofs);
-      for (unsigned int i = 0; i < n_dofs; ++i)
-        component[i] = fe.system_to_component_index(i).first;
-
       // Form finding: the form-finding laws, and no load.
       const bool loaded      = form_finding_laws.empty();
       const bool want_matrix = request.tangent != nullptr;
@@ -289,11 +285,10 @@ namespace pneuma
                         loads.line_load(fe_face_values.quadrature_point(q), t);
                       for (unsigned int i = 0; i < n_dofs; ++i)
                         {
-                          const double f_ext =
-                            load[component[i]]
-                            * fe_face_values.shape_value_component(i,
-                                                                   q,
-                                                                   component[i])
+                          const unsigned int c = ref.component(i);
+                          const double       f_ext =
+                            load[c]
+                            * fe_face_values.shape_value_component(i, q, c)
                             * fe_face_values.JxW(q);
                           cell_residual(i) -= f_ext;
                           cell_external(i) += f_ext;
@@ -317,25 +312,22 @@ namespace pneuma
           bool fast = direct && positions.direct(cell_index);
           for (unsigned int i = 0; fast && i < n_dofs; ++i)
             fast = !constraints.is_constrained(dof_indices[i]);
+          // A cell vector: by local index on the fast path, else through
+          // the constraints.
+          const auto add_vector = [&](const Vector<double> &cell_vector,
+                                      double               *local,
+                                      LA::Vector           *target) {
+            if (fast && local)
+              positions.add_vector(cell_index, cell_vector.data(), local);
+            else if (target)
+              constraints.distribute_local_to_global(cell_vector,
+                                                     dof_indices,
+                                                     *target);
+          };
           if (fast)
             {
               positions.add(cell_index, &cell_matrix(0, 0));
-              if (residual_values)
-                positions.add_vector(cell_index,
-                                     cell_residual.data(),
-                                     residual_values);
-              else if (request.residual)
-                constraints.distribute_local_to_global(cell_residual,
-                                                       dof_indices,
-                                                       *request.residual);
-              if (external_values)
-                positions.add_vector(cell_index,
-                                     cell_external.data(),
-                                     external_values);
-              else if (request.external)
-                constraints.distribute_local_to_global(cell_external,
-                                                       dof_indices,
-                                                       *request.external);
+              add_vector(cell_residual, residual_values, request.residual);
             }
           else
             LA::distribute(constraints,
@@ -344,10 +336,7 @@ namespace pneuma
                            dof_indices,
                            want_matrix ? request.tangent : nullptr,
                            request.residual);
-          if (request.external && !fast)
-            constraints.distribute_local_to_global(cell_external,
-                                                   dof_indices,
-                                                   *request.external);
+          add_vector(cell_external, external_values, request.external);
         }
 
       if (request.residual)

@@ -658,22 +658,8 @@ namespace pneuma
             if (!constraints.is_constrained(i))
               virial += (support.at(i)[c] - centre[c]) * external[i];
         }
-      const auto      rigid = rigid_regions.all_ids();
-      const QGauss<2> quadrature(fe_degree + 1);
-      FEValues<2, 3>  fe_values(*mapping_cache,
-                               dofs.get_fe(),
-                               quadrature,
-                               update_JxW_values);
-      double          area = 0.;
-      for (const auto &cell : dofs.active_cell_iterators())
-        if (cell->is_locally_owned() && !rigid.count(cell->material_id()))
-          {
-            fe_values.reinit(cell);
-            for (unsigned int q = 0; q < quadrature.size(); ++q)
-              area += fe_values.JxW(q);
-          }
-      virial = Utilities::MPI::sum(virial, comm);
-      area   = Utilities::MPI::sum(area, comm);
+      virial            = Utilities::MPI::sum(virial, comm);
+      const double area = reference_area(rigid_regions.all_ids());
       return area > 0. ? std::max(0., virial / (2. * area)) : 0.;
     }
 
@@ -782,23 +768,34 @@ namespace pneuma
     MembraneSubsystem::prestress_force_scale() const
     {
       // The largest prestress times the square root of the area.
-      double          area = 0., n_max = 0.;
-      const QGauss<2> quadrature(fe_degree + 1);
-      FEValues<2, 3>  fe_values(*mapping_cache,
-                               dofs.get_fe(),
-                               quadrature,
-                               update_JxW_values);
+      double n_max = 0.;
       for (const auto &cell : dofs.active_cell_iterators())
         if (cell->is_locally_owned())
           {
             const auto &n = materials[cell->material_id()].prestress;
             n_max         = std::max({n_max, std::abs(n[0]), std::abs(n[1])});
+          }
+      return Utilities::MPI::max(n_max, comm) * std::sqrt(reference_area());
+    }
+
+    double
+    MembraneSubsystem::reference_area(
+      const std::set<types::material_id> &excluded) const
+    {
+      const QGauss<2> quadrature(fe_degree + 1);
+      FEValues<2, 3>  fe_values(*mapping_cache,
+                               dofs.get_fe(),
+                               quadrature,
+                               update_JxW_values);
+      double          area = 0.;
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned() && !excluded.count(cell->material_id()))
+          {
             fe_values.reinit(cell);
             for (unsigned int q = 0; q < quadrature.size(); ++q)
               area += fe_values.JxW(q);
           }
-      return Utilities::MPI::max(n_max, comm)
-             * std::sqrt(Utilities::MPI::sum(area, comm));
+      return Utilities::MPI::sum(area, comm);
     }
 
     double

@@ -499,10 +499,12 @@ namespace pneuma
         }
       ++result.iterations;
       u_trial.add(1., du);
-      const double norm =
-        std::isfinite(du.l2_norm())
-          ? (problem.assemble(u_trial, trial), trial.l2_norm())
-          : std::numeric_limits<double>::infinity();
+      double norm = std::numeric_limits<double>::infinity();
+      if (std::isfinite(du.l2_norm()))
+        {
+          problem.assemble(u_trial, trial);
+          norm = trial.l2_norm();
+        }
       const bool kept = std::isfinite(norm) && norm < r_norm;
       if (print_table)
         out << "    " << std::setw(4) << result.iterations << std::scientific

@@ -309,7 +309,7 @@ namespace pneuma
     double
     initial_shift(const double factor) override;
     /// Assemble the regularisation matrix L (the subsystems'
-    /// add_regularisation) with the tangent's sparsity, unless it is.
+    /// add_regularisation) with the tangent's sparsity, unless it has rows.
     void
     ensure_laplacian();
     void
@@ -444,11 +444,11 @@ namespace pneuma
     dealii::IndexSet                  owned, relevant;
     dealii::AffineConstraints<double> kinematic, update_constraints;
     /// Some rank has kinematic constraints (the same on every rank).
-    bool             any_kinematic = false;
+    bool any_kinematic = false;
+    /// The tangent, and the regularisation matrix L: empty (0 rows) until
+    /// ensure_laplacian() assembles it, cleared after a solve used it.
     LA::SparseMatrix tangent, laplacian;
-    /// The regularisation matrix is assembled (ensure_laplacian()).
-    bool       laplacian_ready = false;
-    LA::Vector external, ghosted;
+    LA::Vector       external, ghosted;
     /// support_residual() of the last add_statistics().
     LA::Vector support_forces;
     /// unconstrained_residual() of the last add_statistics().

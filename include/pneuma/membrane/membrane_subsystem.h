@@ -268,6 +268,10 @@ namespace pneuma
         std::map<types::global_dof_index, Point<3>> &support) const;
       double
       prestress_force_scale() const;
+      /// Area of the reference surface over the ranks, without the cells
+      /// of the regions @p excluded.
+      double
+      reference_area(const std::set<types::material_id> &excluded = {}) const;
       /// Form finding: the consistent normal int N_i n dA of every node of
       /// the owned cells on the input surface (motion_direction).
       void
