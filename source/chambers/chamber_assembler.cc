@@ -8,6 +8,7 @@
 #include <pneuma/core/input_error.h>
 #include <pneuma/membrane/surface_kinematics.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -37,6 +38,11 @@ namespace pneuma
        * @p fe_values: with @p liquid the hydrostatic pressure on wetted
        * points (the quadrature covers the wetted part only), else the gas
        * pressure and the volume.
+       *
+       * The element is FE_Q^3 (degree 1 or 2): every dof is a (node,
+       * component) pair with the node's scalar shape function, so values
+       * and gradients are taken once per node and the tangent is built in
+       * 3x3 node blocks, on fixed-size arrays (no allocation per cell).
        */
       void
       integrate(const FEValues<2, 3>      &fe_values,
@@ -48,31 +54,44 @@ namespace pneuma
                 const double               g,
                 CellIntegrals             &out)
       {
-        const auto                        &fe     = fe_values.get_fe();
-        const unsigned int                 n_dofs = fe.n_dofs_per_cell();
-        std::vector<unsigned int>          component(n_dofs);
-        std::vector<double>                N(n_dofs);
-        std::vector<std::array<double, 2>> dN(n_dofs);
+        constexpr unsigned int max_nodes = 9; // Q2
+        const auto            &fe        = fe_values.get_fe();
+        const unsigned int     n_dofs    = fe.n_dofs_per_cell();
+        const unsigned int     n_nodes   = n_dofs / 3;
+        AssertThrow(n_dofs % 3 == 0 && n_nodes <= max_nodes,
+                    ExcMessage("chamber walls need FE_Q^3 of degree 1 or 2"));
+        // dof[a][c]: the cell dof of component c at node a.
+        std::array<std::array<unsigned int, 3>, max_nodes> dof;
         for (unsigned int i = 0; i < n_dofs; ++i)
-          component[i] = fe.system_to_component_index(i).first;
+          {
+            const auto [c, a] = fe.system_to_component_index(i);
+            dof[a][c]         = i;
+          }
         const double rho_g = load.density * g;
 
+        std::array<double, max_nodes>                N;
+        std::array<Tensor<1, 3>, max_nodes>          grad;
+        std::array<std::array<double, 2>, max_nodes> dN;
         for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
           {
             const membrane::TangentFrame frame =
               membrane::tangent_frame(fe_values.normal_vector(q));
             Tensor<2, 3> Gu;
             Tensor<1, 3> u_q;
-            for (unsigned int i = 0; i < n_dofs; ++i)
+            for (unsigned int a = 0; a < n_nodes; ++a)
               {
-                const Tensor<1, 3> grad =
-                  fe_values.shape_grad_component(i, q, component[i]);
-                dN[i][0] = grad * frame.e[0];
-                dN[i][1] = grad * frame.e[1];
-                N[i]     = fe_values.shape_value_component(i, q, component[i]);
-                u_q[component[i]] += local_u[i] * N[i];
-                for (unsigned int d = 0; d < 3; ++d)
-                  Gu[component[i]][d] += local_u[i] * grad[d];
+                const unsigned int i0 = dof[a][0];
+                grad[a]  = fe_values.shape_grad_component(i0, q, 0);
+                N[a]     = fe_values.shape_value_component(i0, q, 0);
+                dN[a][0] = grad[a] * frame.e[0];
+                dN[a][1] = grad[a] * frame.e[1];
+                for (unsigned int c = 0; c < 3; ++c)
+                  {
+                    const double uc = local_u[dof[a][c]];
+                    u_q[c] += uc * N[a];
+                    for (unsigned int d = 0; d < 3; ++d)
+                      Gu[c][d] += uc * grad[a][d];
+                  }
               }
             const auto         a     = membrane::deformed_tangents(frame, Gu);
             const Tensor<1, 3> av    = s * cross_product_3d(a[0], a[1]);
@@ -93,37 +112,52 @@ namespace pneuma
                 out.area += av.norm() * dA;
               }
 
-            for (unsigned int i = 0; i < n_dofs; ++i)
-              {
-                const double v = av[component[i]] * N[i] * dA;
-                if (out.q)
-                  (*out.q)(i) += v;
-                if (out.residual)
-                  (*out.residual)(i) -= p * v;
-              }
+            for (unsigned int n = 0; n < n_nodes; ++n)
+              for (unsigned int c = 0; c < 3; ++c)
+                {
+                  const double v = av[c] * N[n] * dA;
+                  if (out.q)
+                    (*out.q)(dof[n][c]) += v;
+                  if (out.residual)
+                    (*out.residual)(dof[n][c]) -= p * v;
+                }
             if (!out.matrix || (p == 0. && !liquid))
               continue;
-            // d(a_1 x a_2)/du_j = dN_j,1 e_cj x a_2 + dN_j,2 a_1 x e_cj.
-            std::array<Tensor<1, 3>, 3> e_x_a2, a1_x_e;
-            for (unsigned int d = 0; d < 3; ++d)
+            // d(a_1 x a_2)/du_j = dN_j,1 e_cj x a_2 + dN_j,2 a_1 x e_cj,
+            // so (e_cj x a_2)_ci = eps_{cj k ci} a_2,k: the skew matrices
+            // [a_2]_x and [a_1]_x (times s) with
+            // X[ci][cj] = (e_cj x a_2)_ci, Y[ci][cj] = (a_1 x e_cj)_ci.
+            double X[3][3], Y[3][3];
+            for (unsigned int cj = 0; cj < 3; ++cj)
               {
-                Tensor<1, 3> e_d;
-                e_d[d]    = 1.;
-                e_x_a2[d] = s * cross_product_3d(e_d, a[1]);
-                a1_x_e[d] = s * cross_product_3d(a[0], e_d);
-              }
-            for (unsigned int i = 0; i < n_dofs; ++i)
-              {
-                const unsigned int ci = component[i];
-                for (unsigned int j = 0; j < n_dofs; ++j)
+                Tensor<1, 3> e;
+                e[cj]                 = 1.;
+                const Tensor<1, 3> ex = s * cross_product_3d(e, a[1]);
+                const Tensor<1, 3> ey = s * cross_product_3d(a[0], e);
+                for (unsigned int ci = 0; ci < 3; ++ci)
                   {
-                    const unsigned int cj = component[j];
-                    double             k =
-                      p * N[i]
-                      * (dN[j][0] * e_x_a2[cj][ci] + dN[j][1] * a1_x_e[cj][ci]);
-                    if (liquid) // dp/du_j = -rho g (-g_hat . e_cj) N_j
-                      k += N[i] * av[ci] * rho_g * unit_gravity[cj] * N[j];
-                    (*out.matrix)(i, j) -= k * dA;
+                    X[ci][cj] = ex[ci];
+                    Y[ci][cj] = ey[ci];
+                  }
+              }
+            // dp/du_j = -rho g (-g_hat . e_cj) N_j on wetted points.
+            double H[3][3] = {};
+            if (liquid)
+              for (unsigned int ci = 0; ci < 3; ++ci)
+                for (unsigned int cj = 0; cj < 3; ++cj)
+                  H[ci][cj] = av[ci] * rho_g * unit_gravity[cj];
+            FullMatrix<double> &K = *out.matrix;
+            for (unsigned int na = 0; na < n_nodes; ++na)
+              {
+                const double pa = p * N[na] * dA;
+                for (unsigned int nb = 0; nb < n_nodes; ++nb)
+                  {
+                    const double d0 = pa * dN[nb][0], d1 = pa * dN[nb][1],
+                                 h = N[na] * N[nb] * dA;
+                    for (unsigned int ci = 0; ci < 3; ++ci)
+                      for (unsigned int cj = 0; cj < 3; ++cj)
+                        K(dof[na][ci], dof[nb][cj]) -=
+                          d0 * X[ci][cj] + d1 * Y[ci][cj] + h * H[ci][cj];
                   }
               }
           }

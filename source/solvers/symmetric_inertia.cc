@@ -27,6 +27,19 @@ namespace pneuma
       {
         id.job = job;
         dmumps_c(&id);
+        // The factorization's workspace is the analysis' estimate plus
+        // ICNTL(14) percent. Pivots delayed beyond that (an indefinite
+        // tangent) make MUMPS stop with INFOG(1) = -8, -9, -14, -15 or
+        // -17 (a workspace too small): the relaxation grows and the
+        // factorization is repeated, so that a small default relaxation
+        // keeps the peak memory low without ever failing on it.
+        while (job == 2 && id.icntl[13] < 1000
+               && (id.infog[0] == -8 || id.infog[0] == -9 || id.infog[0] == -14
+                   || id.infog[0] == -15 || id.infog[0] == -17))
+          {
+            id.icntl[13] = 2 * id.icntl[13] + 20;
+            dmumps_c(&id);
+          }
         if (id.infog[0] < 0)
           throw std::runtime_error(
             "MUMPS (symmetric inertia) failed in job " + std::to_string(job)
@@ -86,7 +99,11 @@ namespace pneuma
       // Newton solves (METIS's analysis costs several factorizations on
       // membrane meshes, benchmarks/inflated_cylinder/results.md).
       id.icntl[6] = 2;
-      id.cntl[2]  = zero_pivot_threshold; // CNTL(3)
+      // ICNTL(14): 10 % over the analysis' workspace estimate (MUMPS'
+      // default 20 % held 24 MB that the cylinder at 47k cells never used;
+      // call() grows it where delayed pivots need more).
+      id.icntl[13] = 10;
+      id.cntl[2]   = zero_pivot_threshold; // CNTL(3)
     }
 
     SymmetricInertia::~SymmetricInertia()
@@ -101,44 +118,77 @@ namespace pneuma
     Inertia
     SymmetricInertia::compute(const LA::SparseMatrix &A)
     {
-      // The owned rows' upper triangle, in global 1-based indices.
-      const Epetra_CrsMatrix &M = A.trilinos_matrix();
-      std::vector<MUMPS_INT>  rows, columns;
-      std::vector<double>     values;
-      for (int r = 0; r < M.NumMyRows(); ++r)
+      // The owned rows' upper triangle, in global 1-based indices. The
+      // entries are counted first and written in place: at 400k rows the
+      // triplets are 90 MB, and growing vectors or a second copy of them
+      // next to MUMPS' own arrays would raise the peak memory of the
+      // factorization. With the analysed pattern unchanged only the values
+      // are rewritten (the indices are compared where they stand).
+      const Epetra_CrsMatrix &M              = A.trilinos_matrix();
+      Data                   &d              = *data;
+      DMUMPS_STRUC_C         &id             = d.id;
+      const auto              for_each_entry = [&](const auto &visit) {
+        for (int r = 0; r < M.NumMyRows(); ++r)
+          {
+            int     n       = 0;
+            double *entries = nullptr;
+            int    *local   = nullptr;
+            M.ExtractMyRowView(r, n, entries, local);
+            const long long row = M.GRID64(r);
+            for (int k = 0; k < n; ++k)
+              {
+                const long long column = M.GCID64(local[k]);
+                if (column >= row || id.sym == 0)
+                  visit(static_cast<MUMPS_INT>(row + 1),
+                        static_cast<MUMPS_INT>(column + 1),
+                        entries[k]);
+              }
+          }
+      };
+      std::size_t count = 0;
+      for_each_entry([&](MUMPS_INT, MUMPS_INT, double) { ++count; });
+      bool same_pattern = d.analysed && d.n == static_cast<MUMPS_INT8>(A.m())
+                          && count == d.rows.size();
+      if (same_pattern)
         {
-          int     n       = 0;
-          double *entries = nullptr;
-          int    *local   = nullptr;
-          M.ExtractMyRowView(r, n, entries, local);
-          const long long row = M.GRID64(r);
-          for (int k = 0; k < n; ++k)
+          std::size_t k = 0;
+          for_each_entry([&](const MUMPS_INT i, const MUMPS_INT j, double v) {
+            same_pattern  = same_pattern && d.rows[k] == i && d.columns[k] == j;
+            d.values[k++] = v;
+          });
+          if (!same_pattern) // same size, other entries: new indices
             {
-              const long long column = M.GCID64(local[k]);
-              if (column >= row || data->id.sym == 0)
-                {
-                  rows.push_back(static_cast<MUMPS_INT>(row + 1));
-                  columns.push_back(static_cast<MUMPS_INT>(column + 1));
-                  values.push_back(entries[k]);
-                }
+              k = 0;
+              for_each_entry([&](const MUMPS_INT i, const MUMPS_INT j, double) {
+                d.rows[k]      = i;
+                d.columns[k++] = j;
+              });
             }
         }
-      Data           &d            = *data;
-      DMUMPS_STRUC_C &id           = d.id;
-      const bool      same_pattern = d.analysed
-                                && d.n == static_cast<MUMPS_INT8>(A.m())
-                                && rows == d.rows && columns == d.columns;
-      d.values = values;
+      else
+        {
+          // Release the old arrays before the new ones are allocated.
+          std::vector<MUMPS_INT>().swap(d.rows);
+          std::vector<MUMPS_INT>().swap(d.columns);
+          std::vector<double>().swap(d.values);
+          d.rows.reserve(count);
+          d.columns.reserve(count);
+          d.values.reserve(count);
+          for_each_entry([&](const MUMPS_INT i, const MUMPS_INT j, double v) {
+            d.rows.push_back(i);
+            d.columns.push_back(j);
+            d.values.push_back(v);
+          });
+        }
       id.a_loc = d.values.data();
       if (!same_pattern)
         {
-          d.rows     = rows;
-          d.columns  = columns;
           d.n        = A.m();
           id.n       = static_cast<MUMPS_INT>(A.m());
           id.nnz_loc = static_cast<MUMPS_INT8>(d.rows.size());
           id.irn_loc = d.rows.data();
           id.jcn_loc = d.columns.data();
+          id.a_loc   = d.values.data();
           d.call(1); // analysis
           d.analysed = true;
         }
