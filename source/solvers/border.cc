@@ -60,20 +60,27 @@ namespace pneuma
         if (!decoupled[j])
           coupled.push_back(j);
 
-      LA::Vector y0(rhs.field);
-      y0 = 0.;
-      solver.solve(K, y0, rhs_u);
+      // y0 = K^-1 r_u and Y_a = K^-1 B_a in one solve with several
+      // right-hand sides.
+      const unsigned int      n_c = coupled.size();
+      LA::Vector              y0(rhs.field);
+      std::vector<LA::Vector> Y(n_c);
+      y0                                 = 0.;
+      std::vector<LA::Vector *>       xs = {&y0};
+      std::vector<const LA::Vector *> bs = {&rhs_u};
+      for (unsigned int a = 0; a < n_c; ++a)
+        {
+          Y[a].reinit(rhs.field);
+          if (has_B[coupled[a]])
+            {
+              xs.push_back(&Y[a]);
+              bs.push_back(&B[coupled[a]]);
+            }
+        }
+      solver.solve(K, xs, bs);
       if (!coupled.empty())
         {
           // Schur complement S = D - C^T K^-1 B on the coupled unknowns.
-          const unsigned int      n_c = coupled.size();
-          std::vector<LA::Vector> Y(n_c);
-          for (unsigned int a = 0; a < n_c; ++a)
-            {
-              Y[a].reinit(rhs.field);
-              if (has_B[coupled[a]])
-                solver.solve(K, Y[a], B[coupled[a]]);
-            }
           FullMatrix<double> S(n_c, n_c);
           Vector<double>     s_rhs(n_c), x(n_c);
           for (unsigned int a = 0; a < n_c; ++a)

@@ -310,6 +310,23 @@ namespace pneuma
     }
 
     unsigned int
+    LinearSolver::solve(const LA::SparseMatrix                &A,
+                        const std::vector<LA::Vector *>       &x,
+                        const std::vector<const LA::Vector *> &b)
+    {
+      AssertDimension(x.size(), b.size());
+      if (solver_type == "direct" && !stale && use_symmetric && symmetric)
+        {
+          symmetric->solve(b, x);
+          return 0;
+        }
+      unsigned int iterations = 0;
+      for (unsigned int j = 0; j < x.size(); ++j)
+        iterations += solve(A, *x[j], *b[j]);
+      return iterations;
+    }
+
+    unsigned int
     LinearSolver::solve(const LA::SparseMatrix &A,
                         LA::Vector             &x,
                         const LA::Vector       &b)

@@ -249,38 +249,42 @@ namespace pneuma
     void
     SymmetricInertia::solve(const LA::Vector &b, LA::Vector &x)
     {
+      solve(std::vector<const LA::Vector *>{&b}, std::vector<LA::Vector *>{&x});
+    }
+
+    void
+    SymmetricInertia::solve(const std::vector<const LA::Vector *> &b,
+                            const std::vector<LA::Vector *>       &x)
+    {
+      AssertDimension(b.size(), x.size());
+      if (b.empty())
+        return;
       Data              &d    = *data;
       DMUMPS_STRUC_C    &id   = d.id;
       const MPI_Comm     comm = MPI_Comm_f2c(id.comm_fortran);
       const unsigned int n_ranks =
         dealii::Utilities::MPI::n_mpi_processes(comm);
-      const bool host = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
-      // The owned entries of b with their global indices, to the host.
-      const dealii::IndexSet    &owned = b.locally_owned_elements();
+      const bool host     = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+      const std::size_t n = b[0]->size(), nrhs = b.size();
+      // The owned entries of every b with their global indices, to the
+      // host: the indices once, the values column by column.
+      const dealii::IndexSet    &owned = b[0]->locally_owned_elements();
       std::vector<std::uint64_t> indices;
-      std::vector<double>        values;
       indices.reserve(owned.n_elements());
-      values.reserve(owned.n_elements());
       for (const auto i : owned)
-        {
-          indices.push_back(i);
-          values.push_back(b[i]);
-        }
+        indices.push_back(i);
       const int        n_local = static_cast<int>(indices.size());
       std::vector<int> counts(host ? n_ranks : 0), offsets;
       MPI_Gather(&n_local, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
-      std::vector<std::uint64_t> all_indices;
-      std::vector<double>        all_values, rhs;
+      std::size_t total = 0;
       if (host)
         {
           offsets.assign(n_ranks, 0);
           for (unsigned int r = 1; r < n_ranks; ++r)
             offsets[r] = offsets[r - 1] + counts[r - 1];
-          const std::size_t total = offsets.back() + counts.back();
-          all_indices.resize(total);
-          all_values.resize(total);
-          rhs.assign(b.size(), 0.);
+          total = offsets.back() + counts.back();
         }
+      std::vector<std::uint64_t> all_indices(total);
       MPI_Gatherv(indices.data(),
                   n_local,
                   MPI_UINT64_T,
@@ -290,37 +294,50 @@ namespace pneuma
                   MPI_UINT64_T,
                   0,
                   comm);
-      MPI_Gatherv(values.data(),
-                  n_local,
-                  MPI_DOUBLE,
-                  all_values.data(),
-                  counts.data(),
-                  offsets.data(),
-                  MPI_DOUBLE,
-                  0,
-                  comm);
-      if (host)
-        for (std::size_t k = 0; k < all_indices.size(); ++k)
-          rhs[all_indices[k]] = all_values[k];
-      d.solve_on_host(host ? rhs.data() : nullptr, b.size(), 1);
+      // Column-major n x nrhs on the host.
+      std::vector<double> block(host ? n * nrhs : 0), values(n_local),
+        all_values(total);
+      for (std::size_t j = 0; j < nrhs; ++j)
+        {
+          AssertDimension(b[j]->size(), n);
+          for (int k = 0; k < n_local; ++k)
+            values[k] = (*b[j])[indices[k]];
+          MPI_Gatherv(values.data(),
+                      n_local,
+                      MPI_DOUBLE,
+                      all_values.data(),
+                      counts.data(),
+                      offsets.data(),
+                      MPI_DOUBLE,
+                      0,
+                      comm);
+          if (host)
+            for (std::size_t k = 0; k < total; ++k)
+              block[j * n + all_indices[k]] = all_values[k];
+        }
+      d.solve_on_host(host ? block.data() : nullptr, n, nrhs);
       // Back in the gathered order, then to the owners.
-      if (host)
-        for (std::size_t k = 0; k < all_indices.size(); ++k)
-          all_values[k] = rhs[all_indices[k]];
-      MPI_Scatterv(all_values.data(),
-                   counts.data(),
-                   offsets.data(),
-                   MPI_DOUBLE,
-                   values.data(),
-                   n_local,
-                   MPI_DOUBLE,
-                   0,
-                   comm);
-      if (x.size() != b.size())
-        x.reinit(b);
-      for (std::size_t k = 0; k < indices.size(); ++k)
-        x[indices[k]] = values[k];
-      x.compress(dealii::VectorOperation::insert);
+      for (std::size_t j = 0; j < nrhs; ++j)
+        {
+          if (host)
+            for (std::size_t k = 0; k < total; ++k)
+              all_values[k] = block[j * n + all_indices[k]];
+          MPI_Scatterv(all_values.data(),
+                       counts.data(),
+                       offsets.data(),
+                       MPI_DOUBLE,
+                       values.data(),
+                       n_local,
+                       MPI_DOUBLE,
+                       0,
+                       comm);
+          LA::Vector &xj = *x[j];
+          if (xj.size() != n)
+            xj.reinit(*b[j]);
+          for (int k = 0; k < n_local; ++k)
+            xj[indices[k]] = values[k];
+          xj.compress(dealii::VectorOperation::insert);
+        }
     }
 
     double

@@ -90,6 +90,16 @@ namespace pneuma
       solve(const LA::SparseMatrix &A, LA::Vector &x, const LA::Vector &b);
 
       /**
+       * The same for several right-hand sides: with the symmetric direct
+       * factorization one MUMPS solve for all of them (one pass over the
+       * factors), otherwise one solve each. Returns the Krylov iterations.
+       */
+      unsigned int
+      solve(const LA::SparseMatrix                &A,
+            const std::vector<LA::Vector *>       &x,
+            const std::vector<const LA::Vector *> &b);
+
+      /**
        * Relative tolerance that the next solves on an earlier
        * factorization must reach (an inexact Newton forcing term); never
        * below "direct/Reuse tolerance" or "amg/Relative tolerance".

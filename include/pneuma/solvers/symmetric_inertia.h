@@ -88,6 +88,13 @@ namespace pneuma
       void
       solve(const LA::Vector &b, LA::Vector &x);
 
+      /// x_j = A^{-1} b_j for several distributed right-hand sides of one
+      /// layout, in one MUMPS solve (NRHS = b.size(): one pass over the
+      /// factors instead of one per vector).
+      void
+      solve(const std::vector<const LA::Vector *> &b,
+            const std::vector<LA::Vector *>       &x);
+
       /// The inertia of the last compute().
       const Inertia &
       last() const
