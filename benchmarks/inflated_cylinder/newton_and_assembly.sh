@@ -5,12 +5,12 @@
 # RANKS2=1, mpirun -np 2). Writes newton_and_assembly.md beside this script.
 #
 #   bash benchmarks/inflated_cylinder/newton_and_assembly.sh
-# Knobs: LEVELS ["3 4 5 6"], RUNS [3], RANKS2 [1], BIN [build/pneuma],
+# Knobs: LEVELS ["3 4 5 6 7"], RUNS [3], RANKS2 [1], BIN [build/pneuma],
 #        WORK [/tmp/pneuma_issue17_bench], OUT [<this dir>/newton_and_assembly.md]
 set -euo pipefail
 HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 ROOT="$(cd "$HERE/../.." && pwd)"
-LEVELS="${LEVELS:-3 4 5 6}"
+LEVELS="${LEVELS:-3 4 5 6 7}"
 RUNS="${RUNS:-3}"
 RANKS2="${RANKS2:-1}"
 BIN="${BIN:-$ROOT/build/pneuma}"
@@ -52,7 +52,8 @@ rows = [json.loads(l) for l in open(sys.argv[1])]
 root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(sys.argv[2]))))
 try:
     commit = subprocess.check_output(["git", "-C", root, "rev-parse", "--short", "HEAD"], text=True).strip()
-    dirty = subprocess.call(["git", "-C", root, "diff", "--quiet", "HEAD"]) != 0
+    dirty = subprocess.call(["git", "-C", root, "diff", "--quiet", "HEAD", "--",
+                             "source", "include", "app"]) != 0
 except Exception:
     commit, dirty = "unknown", False
 out = [f"# Issue 17: Newton start, assembly kernel, threads (closed cylinder)", "",
@@ -73,6 +74,26 @@ for ranks, level in keys:
     per_cell = 1e6 * med("assembly") * ranks / (g[0]["cells"] * (its + 1))
     out.append(f"| {ranks} | {g[0]['cells']} | {g[0]['dofs']} | {its} | {med('wall'):.2f} | {med('mb'):.0f} | "
                f"{med('assembly'):.2f} | {per_cell:.2f} | {med('solve'):.2f} | {1e3 * g[0]['dR']:.7f} |")
+# Growth of the wall time with the dofs: slope of log(wall) over log(dofs)
+# between successive sizes, and the least-squares slope from 26k dofs up.
+import math
+for ranks in sorted({r["ranks"] for r in rows}):
+    pts = []
+    for level in sorted({r["level"] for r in rows if r["ranks"] == ranks}):
+        g = [r for r in rows if r["ranks"] == ranks and r["level"] == level]
+        pts.append((g[0]["dofs"], statistics.median(r["wall"] for r in g)))
+    steps = ["%.2f" % (math.log(w1 / w0) / math.log(n1 / n0))
+             for (n0, w0), (n1, w1) in zip(pts, pts[1:])]
+    big = [(math.log(n), math.log(w)) for n, w in pts if n >= 26000]
+    fit = "-"
+    if len(big) >= 2:
+        mx = sum(x for x, _ in big) / len(big)
+        my = sum(y for _, y in big) / len(big)
+        fit = "%.2f" % (sum((x - mx) * (y - my) for x, y in big)
+                        / sum((x - mx) ** 2 for x, _ in big))
+    out += ["", f"Growth of the wall time with the dofs, {ranks} rank(s): "
+            f"exponents between successive sizes {', '.join(steps)}; "
+            f"least squares from 26k dofs up: {fit}."]
 open(sys.argv[2], "w").write("\n".join(out) + "\n")
 print("\n".join(out))
 PY

@@ -27,6 +27,12 @@
 #   OMP_NUM_THREADS  threads for ccx                [2]
 #   PNEUMA_LAUNCH    prefix for pneuma, e.g. "mpirun -np 2"   [none]
 #   CCX_INITIAL_INCREMENT  first load increment of the ccx step [1.0]
+#   RUNS             runs per solver and size; the tables show the medians
+#                    of wall time and peak memory                       [3]
+#   PNEUMA_DEGREES   polynomial degree per entry of PNEUMA_LEVELS, e.g.
+#                    "1 1 2"                                   [all 1]
+#   PNEUMA_SETS      extra parameters for every pneuma run, separated by
+#                    ";", e.g. "Geometry/Cells along length=9"    [none]
 #   SKIP_CCX=1 / SKIP_PNEUMA=1   leave one solver out
 #   KEEP_ROWS=1      keep the previous rows of a skipped solver in the table,
 #                    e.g. rerun only pneuma against earlier ccx numbers:
@@ -43,6 +49,12 @@ RESULTS_MD="${RESULTS_MD:-$HERE/results.md}"
 CCX_TARGETS="${CCX_TARGETS:-2000 10000 50000}"
 PNEUMA_LEVELS="${PNEUMA_LEVELS:-3 4 5}"
 CCX_INITIAL_INCREMENT="${CCX_INITIAL_INCREMENT:-1.0}"
+RUNS="${RUNS:-3}"
+export RUNS
+PNEUMA_DEGREES="${PNEUMA_DEGREES:-}"
+extra_sets=()
+IFS=';' read -r -a _sets <<< "${PNEUMA_SETS:-}"
+for _s in "${_sets[@]}"; do [ -n "$_s" ] && extra_sets+=(--set "$_s"); done
 PNEUMA_LAUNCH="${PNEUMA_LAUNCH:-}"
 export OMP_NUM_THREADS="${OMP_NUM_THREADS:-2}"
 PNEUMA_BIN="$ROOT/build/pneuma"
@@ -89,6 +101,15 @@ except Exception:          # no/odd time log: keep going, report nan
 EOF
 }
 
+# "w1 w2 ..." "m1 m2 ..." -> "median_wall median_MB"
+medians() {
+  python3 - "$1" "$2" <<'EOF'
+import statistics, sys
+print(" ".join("%.3f" % statistics.median(float(v) for v in a.split())
+               for a in sys.argv[1:]))
+EOF
+}
+
 # ------------------------------------------------------------- CalculiX
 if [ "${SKIP_CCX:-0}" != 1 ]; then
   command -v "$CCX" >/dev/null || { echo "ccx not found" >&2; exit 1; }
@@ -102,10 +123,15 @@ if [ "${SKIP_CCX:-0}" != 1 ]; then
     if [ "$CCX_INITIAL_INCREMENT" != 1.0 ]; then
       sed -i "s/^1.0, 1.0\$/$CCX_INITIAL_INCREMENT, 1.0/" "$dir/cyl.inp"
     fi
-    echo "ccx: target $target elements, running in $dir (OMP_NUM_THREADS=$OMP_NUM_THREADS) ..."
+    echo "ccx: target $target elements, running in $dir (OMP_NUM_THREADS=$OMP_NUM_THREADS, $RUNS runs) ..."
     rc=0
-    (cd "$dir" && /usr/bin/time -v "$CCX" -i cyl > ccx.log 2> time.log) || rc=$?
-    read -r wall mb < <(time_facts "$dir/time.log")
+    walls=""; mbs=""
+    for run in $(seq 1 "$RUNS"); do
+      (cd "$dir" && /usr/bin/time -v "$CCX" -i cyl > ccx.log 2> time.log) || rc=$?
+      read -r w m < <(time_facts "$dir/time.log")
+      walls="$walls $w"; mbs="$mbs $m"
+    done
+    read -r wall mb < <(medians "$walls" "$mbs")
     if [ "$rc" = 0 ] && python3 "$HERE/make_ccx_deck.py" parse --dat "$dir/cyl.dat" \
          --meta "$dir/cyl.meta.json" --stdout "$dir/ccx.log" > "$dir/result.json" &&
        ! grep -q "ERROR" "$dir/ccx.log"; then
@@ -136,22 +162,31 @@ if [ "${SKIP_PNEUMA:-0}" != 1 ]; then
     echo "pneuma: $PRM_REL not found, skipping pneuma runs"
   else
     i=0
+    read -r -a degrees <<< "$PNEUMA_DEGREES"
     for level in $PNEUMA_LEVELS; do
       i=$((i + 1))
+      degree="${degrees[$((i - 1))]:-1}"
       # the binary may be missing for a moment while it is relinked
       for _ in $(seq 1 30); do [ -x "$PNEUMA_BIN" ] && break; sleep 10; done
       dir="$WORK/pneuma_$level"
       rm -rf "$dir"; mkdir -p "$dir"
-      echo "pneuma: Global refinements=$level, output in $dir ..."
+      echo "pneuma: Global refinements=$level, Q$degree, output in $dir ($RUNS runs) ..."
       rc=0
-      (cd "$ROOT" && /usr/bin/time -v -o "$dir/time.log" $PNEUMA_LAUNCH \
-         "$PNEUMA_BIN" "$PRM_REL" \
-         --set "Geometry/Global refinements=$level" \
-         --set "Output/Directory=$dir" > "$dir/pneuma.log" 2>&1) || rc=$?
-      read -r wall mb < <(time_facts "$dir/time.log")
-      python3 - "$dir/summary.json" "$i" "$wall" "$mb" "$rc" "$level" >> "$ROWS" <<'EOF'
+      walls=""; mbs=""
+      for run in $(seq 1 "$RUNS"); do
+        (cd "$ROOT" && /usr/bin/time -v -o "$dir/time.log" $PNEUMA_LAUNCH \
+           "$PNEUMA_BIN" "$PRM_REL" \
+           --set "Geometry/Global refinements=$level" \
+           --set "Discretisation/Polynomial degree=$degree" \
+           "${extra_sets[@]}" \
+           --set "Output/Directory=$dir" > "$dir/pneuma.log" 2>&1) || rc=$?
+        read -r w m < <(time_facts "$dir/time.log")
+        walls="$walls $w"; mbs="$mbs $m"
+      done
+      read -r wall mb < <(medians "$walls" "$mbs")
+      python3 - "$dir/summary.json" "$i" "$wall" "$mb" "$rc" "$level" "$degree" >> "$ROWS" <<'EOF'
 import json, sys
-path, size, wall, mb, rc, level = sys.argv[1:]
+path, size, wall, mb, rc, level, degree = sys.argv[1:]
 row = {"solver": "pneuma", "size": int(size), "wall_s": float(wall),
        "peak_MB": float(mb), "status": "ok"}
 try:
@@ -159,7 +194,9 @@ try:
     d = s["monitor_points"][0]["u"]
     row.update(cells=s["cells"], dofs=s["dofs"], dR_mm=1e3 * d[1],
                newton=s["newton_iterations"],
-               note="N=%s, internal wall_seconds %.2f" % (level, s["wall_seconds"]))
+               degree=int(degree),
+               note="N=%s, Q%s, internal wall_seconds %.2f (last run)" % (
+                   level, degree, s["wall_seconds"]))
     if int(rc) != 0 or s.get("exit_code", 0) != 0:
         row["status"] = "failed (rc=%s, exit_code=%s)" % (rc, s.get("exit_code"))
 except Exception as e:  # no/broken summary.json
@@ -170,6 +207,16 @@ EOF
     done
   fi
 fi
+
+# The memory floor of a pneuma process: libraries loaded and MPI started,
+# the input read and rejected (an invalid refinement), nothing allocated.
+floor_mb=nan
+if [ -x "$PNEUMA_BIN" ]; then
+  (cd "$ROOT" && /usr/bin/time -v -o "$WORK/floor.time" "$PNEUMA_BIN" "$PRM_REL" \
+     --set "Geometry/Global refinements=-1" > /dev/null 2>&1) || true
+  read -r _ floor_mb < <(time_facts "$WORK/floor.time")
+fi
+export PNEUMA_FLOOR_MB="$floor_mb" PNEUMA_SETS="${PNEUMA_SETS:-}"
 
 # ---------------------------------------------------------------- report
 python3 - "$ROWS" "$RESULTS_MD" "$HERE/make_ccx_deck.py" "$ROOT" <<'EOF'
@@ -191,7 +238,8 @@ for r in rows:
     el = None if dr is None else 100 * (dr - d_lin) / d_lin
     en = None if dr is None else 100 * (dr - d_svk) / d_svk
     lines.append("| " + " | ".join([
-        r["solver"] + ("" if r["status"] == "ok" else " " + r["status"]),
+        r["solver"] + (" Q%d" % r["degree"] if r.get("degree") else "")
+        + ("" if r["status"] == "ok" else " " + r["status"]),
         f(r.get("cells"), "%d"), f(r.get("dofs"), "%d"),
         f(r.get("wall_s"), "%.2f"), f(r.get("peak_MB"), "%.0f"),
         f(dr, "%.5f"), f(el, "%+.3f"), f(en, "%+.3f"),
@@ -237,13 +285,14 @@ Generated by `benchmarks/inflated_cylinder/run.sh` on {datetime.datetime.now().s
 
 Machine: {os.cpu_count()} cores (nproc), CPU `{cpu}`, RAM {mem}, {platform.system()} {platform.release()}.
 pneuma commit {commit}; CalculiX: {ccx_ver}; OMP_NUM_THREADS={os.environ.get('OMP_NUM_THREADS')};
-pneuma launch prefix: `{os.environ.get('PNEUMA_LAUNCH') or 'none (1 process)'}`.
+pneuma launch prefix: `{os.environ.get('PNEUMA_LAUNCH') or 'none (1 process)'}`;
+pneuma extra parameters: `{os.environ.get('PNEUMA_SETS') or 'none'}`.
 
 Problem: closed cylinder R = 0.23 m, L = 2 m, wall 1 mm, E = 7.6e9 Pa,
 nu = 0.3, internal pressure 1e5 Pa; dR = radial displacement at x = 1.
 References: linear dR = {d_lin:.7f} mm, finite-strain SVK membrane
 dR = {d_svk:.7f} mm.  Wall time and peak memory are those of the whole
-process from `/usr/bin/time -v`.  CalculiX "dofs" is its number of
+process from `/usr/bin/time -v`, medians of {os.environ.get('RUNS', '3')} runs.  CalculiX "dofs" is its number of
 equations after expanding the S4 shells into 3D bricks; its "cells" are
 S4 elements (hull + two 10 mm O-grid caps); Newton iterations include
 those of cut-back attempts.
@@ -269,6 +318,10 @@ Notes:
   and the step is redone in 4 increments of 0.25, so 24 iterations; at 50k
   the full-load increment converges in 7.  CCX_INITIAL_INCREMENT=0.25
   avoids the failed attempt (2k: 20 iterations).
+- Memory floor: a pneuma process that only loads its libraries, starts
+  MPI and reads its input peaks at {os.environ.get('PNEUMA_FLOOR_MB')} MB
+  (mostly deal.II's code pages, shared between ranks); ccx's floor is a
+  few MB. The peak column includes it.
 - CalculiX ran with OMP_NUM_THREADS threads, pneuma as one process unless
   PNEUMA_LAUNCH says otherwise; timings are only meaningful on an
   otherwise idle machine.
@@ -279,6 +332,14 @@ print()
 print("\n".join(ratio))
 print()
 print("\n".join(notes))
+# The generated part sits between two markers in results.md; the dated
+# sections after it (by hand, one per change) are kept.
+begin, end = "<!-- run.sh: begin -->\n", "<!-- run.sh: end -->\n"
+old = open(md_path).read() if os.path.exists(md_path) else ""
+if begin in old and end in old:
+    text = old[:old.index(begin)] + begin + text + end + old[old.index(end) + len(end):]
+else:
+    text = begin + text + end + old
 with open(md_path, "w") as fh:
     fh.write(text)
 print("\nwritten", md_path)
