@@ -5,7 +5,7 @@
 //    differences of the residual, at a perturbed state off equilibrium in
 //    the chamber unknowns too: gas with a closed amount, gas with
 //    prescribed volume, an open liquid tank and liquid + gas in a closed
-//    tube, on degree 1 and 2.
+//    tube, the last two also with a prescribed level, on degree 1 and 2.
 // 2. Liquid + gas in the airbeam tube (gas amount doubled, then 0.15 m^3
 //    of water filled in, the free surface crossing cells in every step):
 //    Newton's quadratic rate; the gas law p V_gas^1.4 = p_a (2 V0)^1.4; the
@@ -89,12 +89,32 @@ main(int argc, char **argv)
   volume.push_back({"Chambers/Chamber 1/Gas/Control", "volume"});
   volume.push_back(
     {"Chambers/Chamber 1/Gas/Volume/Function expression", "1.3"});
+  // The liquid fillings with a prescribed level (Liquid/Control = level):
+  // the tank to 0.1 m above its rim, the tube to its axis.
+  auto tank_level = tank;
+  tank_level.push_back({"Chambers/Chamber 1/Liquid/Control", "level"});
+  tank_level.push_back(
+    {"Chambers/Chamber 1/Liquid/Level/Function expression", "0.1*t"});
+  auto tube_level = tube;
+  tube_level.push_back({"Chambers/Chamber 1/Liquid/Control", "level"});
+  tube_level.push_back(
+    {"Chambers/Chamber 1/Liquid/Level/Function expression", "0.1*t-0.1"});
   for (const unsigned int degree : {1u, 2u})
     {
       ok = tangent_check("gas, closed amount", gas_amount, degree, 0.05) && ok;
       ok = tangent_check("gas, prescribed volume", volume, degree, 0.05) && ok;
       ok = tangent_check("liquid, open tank", tank, degree, 0.02) && ok;
       ok = tangent_check("liquid and gas", tube, degree, 0.005) && ok;
+      ok = tangent_check("liquid, open tank, prescribed level",
+                         tank_level,
+                         degree,
+                         0.02)
+           && ok;
+      ok = tangent_check("liquid and gas, prescribed level",
+                         tube_level,
+                         degree,
+                         0.005)
+           && ok;
     }
 
   // Liquid + gas filling of the airbeam tube.

@@ -137,6 +137,8 @@ check "$c" 1 "flipping region 1 or 2 closes it" --set "Chambers/Chamber 1/Region
 check "$c" 1 "walls face into the chamber" --set "Chambers/Chamber 1/Regions=-0, -1, -2"
 check "$c" 1 "no cells in region 7" --set "Chambers/Chamber 1/Regions=0, 1, 2, 7"
 check "$c" 1 "'x' is not a material id" --set "Chambers/Chamber 1/Regions=0, x"
+# A prescribed level above a closed chamber's top (the tube reaches z = 0.23).
+check "$c" 1 "Chambers/Chamber 1/Liquid/Level: the level 0.5 m at t = 0 is at or above the chamber's top" --set "Chambers/Chamber 1/Filling=liquid" --set "Chambers/Chamber 1/Liquid/Control=level" --set "Chambers/Chamber 1/Liquid/Level/Function expression=0.5"
 check "$c" 1 "Chambers/Chamber 1/Connected to" --set "Chambers/Chamber 1/Filling=connected"
 check "$c" 1 "Chambers/Chamber 1/Gas/Gas amount/Function expression" --set "Chambers/Chamber 1/Gas/Gas amount/Function expression=1+*t"
 check "$c" 1 "Chambers/Chamber 1/Gas/Control" --set "Chambers/Chamber 1/Filling=liquid and gas" --set "Chambers/Chamber 1/Gas/Control=volume"

@@ -117,7 +117,18 @@ namespace pneuma
                             def.density,
                             "Density of the liquid [kg/m^3].",
                             Patterns::Double(0.));
+          add_selection(prm,
+                        "Control",
+                        def.liquid_control,
+                        {{"volume", LiquidControl::volume},
+                         {"level", LiquidControl::level}},
+                        "volume: the liquid volume follows the Volume curve "
+                        "[m^3] and the level is found; level: the free "
+                        "surface's height follows the Level curve [m] "
+                        "(measured against gravity: with gravity along -z, "
+                        "its z coordinate) and the volume is found.");
           loads::declare_function(prm, "Volume", 1, "0");
+          loads::declare_function(prm, "Level", 1, "0");
           prm.leave_subsection();
           prm.leave_subsection();
         }
@@ -214,11 +225,14 @@ namespace pneuma
 
           prm.enter_subsection("Liquid");
           def.liquid_volume = std::make_unique<Functions::ParsedFunction<3>>(1);
+          def.liquid_level  = std::make_unique<Functions::ParsedFunction<3>>(1);
           loads::parse_function(prm,
                                 *def.liquid_volume,
                                 "Volume",
                                 def.path + "/Liquid/Volume",
                                 true);
+          loads::parse_function(
+            prm, *def.liquid_level, "Level", def.path + "/Liquid/Level", true);
           prm.leave_subsection();
           prm.leave_subsection();
         }

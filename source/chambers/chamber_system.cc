@@ -193,9 +193,12 @@ namespace pneuma
           if (g.liquid)
             {
               const std::string error = predict_level(g, u);
+              const auto       &def   = parameters.chambers[g.leader];
               if (!error.empty())
-                throw InputError(parameters.chambers[g.leader].path
-                                   + "/Liquid/Volume",
+                throw InputError(def.path
+                                   + (def.liquid_control == LiquidControl::level
+                                        ? "/Liquid/Level"
+                                        : "/Liquid/Volume"),
                                  error.substr(error.find(':') + 2));
             }
           if (!g.gas)
@@ -240,6 +243,22 @@ namespace pneuma
           const auto [a, b] = assembler.height_range(u, c);
           lo                = std::min(lo, a);
           hi                = std::max(hi, b);
+        }
+      if (def.liquid_control == LiquidControl::level)
+        {
+          // The level is prescribed: below the lowest wall point the
+          // chamber is empty; a closed chamber cannot be filled to its top.
+          const double level = curve(*def.liquid_level, time);
+          g.empty            = level <= lo;
+          g.h                = g.empty ? lo - 1e-9 * (hi - lo) : level;
+          if (!def.open && level >= hi)
+            {
+              std::ostringstream msg;
+              msg << def.path << ": the level " << level << " m at t = " << time
+                  << " is at or above the chamber's top (" << hi << " m)";
+              return msg.str();
+            }
+          return "";
         }
       const auto volume = [&](const double h) {
         std::pair<double, double> sum{0., 0.};
@@ -353,8 +372,13 @@ namespace pneuma
               p_ref = std::max(p_ref, depth_pressure);
               const double V_ref =
                 std::max({curve(*def.liquid_volume, t), std::abs(V), 1e-300});
-              unknown_scale[g.h_index]  = 1.;
-              residual_scale[g.h_index] = q_norm * depth_pressure / V_ref;
+              unknown_scale[g.h_index] = 1.;
+              // The row's residual is a volume, or with a prescribed level
+              // a length: both scaled to a force.
+              residual_scale[g.h_index] =
+                def.liquid_control == LiquidControl::level
+                  ? q_norm * depth_pressure / std::max(hi - lo, 1e-300)
+                  : q_norm * depth_pressure / V_ref;
             }
           force_reference += q_norm * p_ref;
         }
@@ -465,6 +489,16 @@ namespace pneuma
               B(j) = q_l;
               B(j) *= -def.density * g_magnitude;
               has_B(j) = true;
+              if (def.liquid_control == LiquidControl::level)
+                {
+                  // h - h(t) = 0: a row of its own (the border solve
+                  // eliminates it first).
+                  D(j, j)     = 1.;
+                  residual[j] = (border[j] * unknown_scale[j]
+                                 - curve(*def.liquid_level, time))
+                                * residual_scale[j];
+                  continue;
+                }
               C(j)     = q_l;
               has_C(j) = true;
               D(j, j)  = A_fs;

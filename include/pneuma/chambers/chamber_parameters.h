@@ -55,6 +55,17 @@ namespace pneuma
       volume
     };
 
+    /// What prescribes a liquid filling ("Liquid/Control").
+    enum class LiquidControl
+    {
+      /// The liquid volume follows "Liquid/Volume"; the level is its
+      /// Lagrange multiplier.
+      volume,
+      /// The level (height of the free surface against gravity) follows
+      /// "Liquid/Level"; the volume follows from it.
+      level
+    };
+
     /**
      * One chamber, "Chambers/Chamber k". The members bound to an entry
      * (marked "entry") hold its default; the others are derived from the
@@ -87,9 +98,11 @@ namespace pneuma
       /// Entry "Gas/Seal time".
       double seal_time = -1.;
       /// Entry "Liquid/Density".
-      double                                        density = 1000.;
+      double density = 1000.;
+      /// Entry "Liquid/Control".
+      LiquidControl liquid_control = LiquidControl::volume;
       std::unique_ptr<Functions::ParsedFunction<3>> pressure, amount, volume,
-        liquid_volume;
+        liquid_volume, liquid_level;
 
       bool
       has_gas() const
