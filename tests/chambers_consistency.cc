@@ -14,6 +14,8 @@
 #include "test_tools.h"
 
 #include <cmath>
+#include <tuple>
+#include <vector>
 
 namespace
 {
@@ -99,23 +101,16 @@ main(int argc, char **argv)
   tube_level.push_back({"Chambers/Chamber 1/Liquid/Control", "level"});
   tube_level.push_back(
     {"Chambers/Chamber 1/Liquid/Level/Function expression", "0.1*t-0.1"});
+  const std::vector<std::tuple<std::string, pneuma_test::Settings, double>>
+    cases = {{"gas, closed amount", gas_amount, 0.05},
+             {"gas, prescribed volume", volume, 0.05},
+             {"liquid, open tank", tank, 0.02},
+             {"liquid and gas", tube, 0.005},
+             {"liquid, open tank, prescribed level", tank_level, 0.02},
+             {"liquid and gas, prescribed level", tube_level, 0.005}};
   for (const unsigned int degree : {1u, 2u})
-    {
-      ok = tangent_check("gas, closed amount", gas_amount, degree, 0.05) && ok;
-      ok = tangent_check("gas, prescribed volume", volume, degree, 0.05) && ok;
-      ok = tangent_check("liquid, open tank", tank, degree, 0.02) && ok;
-      ok = tangent_check("liquid and gas", tube, degree, 0.005) && ok;
-      ok = tangent_check("liquid, open tank, prescribed level",
-                         tank_level,
-                         degree,
-                         0.02)
-           && ok;
-      ok = tangent_check("liquid and gas, prescribed level",
-                         tube_level,
-                         degree,
-                         0.005)
-           && ok;
-    }
+    for (const auto &[name, settings, amplitude] : cases)
+      ok = tangent_check(name, settings, degree, amplitude) && ok;
 
   // Liquid + gas filling of the airbeam tube.
   const auto s = pneuma_test::run(

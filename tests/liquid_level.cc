@@ -11,7 +11,7 @@
 // 3. The vertical reaction at the rim equals the water weight rho g V to
 //    1e-8.
 
-#include "test_tools.h"
+#include "v5_tank_scene.h"
 
 #include <sstream>
 
@@ -20,27 +20,7 @@ namespace
   pneuma_test::Settings
   tank(const pneuma_test::Settings &filling)
   {
-    pneuma_test::Settings s = {
-      {"Geometry/Type", "disc"},
-      {"Geometry/disc/Radius", "0.5"},
-      {"Geometry/Global refinements", "3"},
-      {"Discretisation/Polynomial degree", "2"},
-      {"Materials/Region 0/Law", "Saint Venant-Kirchhoff"},
-      {"Materials/Region 0/Thickness", "1e-3"},
-      {"Materials/Region 0/Saint Venant-Kirchhoff/Young's modulus", "1e9"},
-      {"Materials/Region 0/Saint Venant-Kirchhoff/Poisson's ratio", "0.3"},
-      {"Boundary conditions/Fixed boundaries", "0: xyz"},
-      {"Chambers/Number of chambers", "1"},
-      {"Chambers/Chamber 1/Regions", "-0"},
-      {"Chambers/Chamber 1/Open", "true"},
-      {"Chambers/Chamber 1/Filling", "liquid"},
-      {"Chambers/Chamber 1/Liquid/Density", "1000"},
-      {"Chambers/Gravity", "0, 0, -9.81"},
-      {"Load stepping/Initial increment", "0.25"},
-      {"Output/Directory", "output-liquid-level"},
-      {"Output/Monitor points", "0,0,0"}};
-    s.insert(s.end(), filling.begin(), filling.end());
-    return s;
+    return pneuma_test::v5_tank(filling, "output-liquid-level");
   }
 } // namespace
 
