@@ -374,10 +374,21 @@ namespace pneuma
                 std::max({curve(*def.liquid_volume, t), std::abs(V), 1e-300});
               unknown_scale[g.h_index] = 1.;
               // The row's residual is a volume, or with a prescribed level
-              // a length: both scaled to a force.
+              // a length: both scaled to a force. The length: the walls'
+              // height range, or the level over the lowest wall point (a
+              // flat bottom at the start), or 1 m if both vanish (an empty
+              // chamber), so that the scale stays finite.
+              double L_ref = 1.;
+              if (def.liquid_control == LiquidControl::level)
+                {
+                  L_ref = std::max(hi - lo,
+                                   std::abs(curve(*def.liquid_level, t) - lo));
+                  if (!(L_ref > 0.) || !std::isfinite(L_ref))
+                    L_ref = 1.;
+                }
               residual_scale[g.h_index] =
                 def.liquid_control == LiquidControl::level
-                  ? q_norm * depth_pressure / std::max(hi - lo, 1e-300)
+                  ? q_norm * depth_pressure / L_ref
                   : q_norm * depth_pressure / V_ref;
             }
           force_reference += q_norm * p_ref;
