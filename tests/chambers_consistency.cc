@@ -83,24 +83,31 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   bool                                     ok = true;
 
-  auto gas_amount = sphere;
-  gas_amount.push_back({"Chambers/Chamber 1/Gas/Control", "gas amount"});
-  gas_amount.push_back(
-    {"Chambers/Chamber 1/Gas/Gas amount/Function expression", "1.5"});
-  auto volume = sphere;
-  volume.push_back({"Chambers/Chamber 1/Gas/Control", "volume"});
-  volume.push_back(
-    {"Chambers/Chamber 1/Gas/Volume/Function expression", "1.3"});
+  // A base scene with a filling's settings added.
+  const auto with = [](pneuma_test::Settings        base,
+                       const pneuma_test::Settings &filling) {
+    base.insert(base.end(), filling.begin(), filling.end());
+    return base;
+  };
+  const std::string chamber = "Chambers/Chamber 1/";
+  const auto        gas_amount =
+    with(sphere,
+         {{chamber + "Gas/Control", "gas amount"},
+          {chamber + "Gas/Gas amount/Function expression", "1.5"}});
+  const auto volume =
+    with(sphere,
+         {{chamber + "Gas/Control", "volume"},
+          {chamber + "Gas/Volume/Function expression", "1.3"}});
   // The liquid fillings with a prescribed level (Liquid/Control = level):
   // the tank to 0.1 m above its rim, the tube to its axis.
-  auto tank_level = tank;
-  tank_level.push_back({"Chambers/Chamber 1/Liquid/Control", "level"});
-  tank_level.push_back(
-    {"Chambers/Chamber 1/Liquid/Level/Function expression", "0.1*t"});
-  auto tube_level = tube;
-  tube_level.push_back({"Chambers/Chamber 1/Liquid/Control", "level"});
-  tube_level.push_back(
-    {"Chambers/Chamber 1/Liquid/Level/Function expression", "0.1*t-0.1"});
+  const auto tank_level =
+    with(tank,
+         {{chamber + "Liquid/Control", "level"},
+          {chamber + "Liquid/Level/Function expression", "0.1*t"}});
+  const auto tube_level =
+    with(tube,
+         {{chamber + "Liquid/Control", "level"},
+          {chamber + "Liquid/Level/Function expression", "0.1*t-0.1"}});
   const std::vector<std::tuple<std::string, pneuma_test::Settings, double>>
     cases = {{"gas, closed amount", gas_amount, 0.05},
              {"gas, prescribed volume", volume, 0.05},

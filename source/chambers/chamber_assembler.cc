@@ -6,6 +6,7 @@
 #include <pneuma/chambers/chamber_assembler.h>
 #include <pneuma/chambers/free_surface_quadrature.h>
 #include <pneuma/core/input_error.h>
+#include <pneuma/membrane/reference_geometry.h>
 #include <pneuma/membrane/surface_kinematics.h>
 
 #include <array>
@@ -54,19 +55,11 @@ namespace pneuma
                 const double               g,
                 CellIntegrals             &out)
       {
-        constexpr unsigned int max_nodes = 9; // Q2
+        constexpr unsigned int max_nodes = membrane::max_cell_nodes;
         const auto            &fe        = fe_values.get_fe();
-        const unsigned int     n_dofs    = fe.n_dofs_per_cell();
-        const unsigned int     n_nodes   = n_dofs / 3;
-        AssertThrow(n_dofs % 3 == 0 && n_nodes <= max_nodes,
-                    ExcMessage("chamber walls need FE_Q^3 of degree 1 or 2"));
+        const unsigned int     n_nodes   = fe.n_dofs_per_cell() / 3;
         // dof[a][c]: the cell dof of component c at node a.
-        std::array<std::array<unsigned int, 3>, max_nodes> dof;
-        for (unsigned int i = 0; i < n_dofs; ++i)
-          {
-            const auto [c, a] = fe.system_to_component_index(i);
-            dof[a][c]         = i;
-          }
+        const auto   dof   = membrane::node_dofs(fe);
         const double rho_g = load.density * g;
 
         std::array<double, max_nodes>                N;

@@ -7,6 +7,21 @@ namespace pneuma
 {
   namespace membrane
   {
+    std::array<std::array<unsigned int, 3>, max_cell_nodes>
+    node_dofs(const FiniteElement<2, 3> &fe)
+    {
+      const unsigned int n_dofs = fe.n_dofs_per_cell();
+      AssertThrow(n_dofs % 3 == 0 && n_dofs / 3 <= max_cell_nodes,
+                  ExcMessage("membranes need FE_Q^3 of degree 1 or 2"));
+      std::array<std::array<unsigned int, 3>, max_cell_nodes> dof{};
+      for (unsigned int i = 0; i < n_dofs; ++i)
+        {
+          const auto [c, a] = fe.system_to_component_index(i);
+          dof[a][c]         = i;
+        }
+      return dof;
+    }
+
     double
     cell_orientation(const geometry::SceneGenerator &geometry,
                      const FEValues<2, 3>           &fe_values)
@@ -43,13 +58,11 @@ namespace pneuma
       node_of.resize(n_dofs);
       component_of.resize(n_dofs);
       // The first dof of each node: its scalar shape function.
-      std::vector<unsigned int> first_dof(n_node);
+      const auto by_node = node_dofs(fe);
       for (unsigned int i = 0; i < n_dofs; ++i)
         {
           component_of[i] = fe.system_to_component_index(i).first;
           node_of[i]      = fe.system_to_component_index(i).second;
-          if (component_of[i] == 0)
-            first_dof[node_of[i]] = i;
         }
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
@@ -88,14 +101,14 @@ namespace pneuma
               for (unsigned int a = 0; a < n_node; ++a)
                 {
                   const Tensor<1, 3> grad =
-                    fe_values.shape_grad_component(first_dof[a], q, 0);
+                    fe_values.shape_grad_component(by_node[a][0], q, 0);
                   auto &dN =
                     derivatives[(std::size_t(k) * n_q + q) * n_node + a];
                   dN[0] = grad * frame.e[0];
                   dN[1] = grad * frame.e[1];
                   if (k == 0)
                     values[q * n_node + a] =
-                      fe_values.shape_value_component(first_dof[a], q, 0);
+                      fe_values.shape_value_component(by_node[a][0], q, 0);
                 }
             }
           ++k;
@@ -105,7 +118,7 @@ namespace pneuma
         for (unsigned int q = 0; q < n_q; ++q)
           for (unsigned int a = 0; a < n_node; ++a)
             values[q * n_node + a] =
-              fe.shape_value_component(first_dof[a], quadrature.point(q), 0);
+              fe.shape_value_component(by_node[a][0], quadrature.point(q), 0);
     }
   } // namespace membrane
 } // namespace pneuma

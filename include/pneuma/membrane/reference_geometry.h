@@ -32,6 +32,15 @@ namespace pneuma
   {
     using namespace dealii;
 
+    /// Most nodes per cell of a membrane element (Q2).
+    constexpr unsigned int max_cell_nodes = 9;
+
+    /// The dofs of a membrane element FE_Q^3 (degree 1 or 2) by node:
+    /// result[a][c] is the cell dof of component c at node a, the node's
+    /// scalar shape function being the base element's function a.
+    std::array<std::array<unsigned int, 3>, max_cell_nodes>
+    node_dofs(const FiniteElement<2, 3> &fe);
+
     /// Outward orientation (+1 or -1) of the cell of @p fe_values (reinit'ed
     /// with quadrature points and normal vectors).
     double
