@@ -194,6 +194,11 @@ namespace pneuma
                         surface_load_on,
                         "Apply the dead surface traction function.");
       declare_function(prm, "Surface traction", 3, "0; 0; 0");
+      prm.add_parameter("Surface load regions",
+                        surface_regions_text,
+                        "Material ids on which the dead surface traction "
+                        "acts; empty = all cells.",
+                        Patterns::List(Patterns::Integer(0)));
       prm.add_parameter("Line load boundaries",
                         line_load_text,
                         "Boundary ids carrying the dead line load.",
@@ -238,6 +243,9 @@ namespace pneuma
       const auto pr =
         parse_id_list(pressure_regions_text, "Loads/Pressure regions");
       pressure_ids = std::set<types::material_id>(pr.begin(), pr.end());
+      const auto sr =
+        parse_id_list(surface_regions_text, "Loads/Surface load regions");
+      surface_ids = std::set<types::material_id>(sr.begin(), sr.end());
       parse_function(prm,
                      *gravity_function,
                      "Gravity vector",
@@ -284,6 +292,13 @@ namespace pneuma
     Loads::pressure_acts_on(const types::material_id id) const
     {
       return pressure_ids.empty() || pressure_ids.count(id) > 0;
+    }
+
+    bool
+    Loads::surface_load_acts_on(const types::material_id id) const
+    {
+      return surface_load_on
+             && (surface_ids.empty() || surface_ids.count(id) > 0);
     }
 
     namespace

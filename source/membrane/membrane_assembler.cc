@@ -133,6 +133,8 @@ namespace pneuma
           const double H = material.thickness;
           const bool   pressurised =
             loaded && loads.pressure_acts_on(cell->material_id());
+          const bool surface_loaded =
+            loaded && loads.surface_load_acts_on(cell->material_id());
 
           for (unsigned int q = 0; q < n_q; ++q)
             {
@@ -168,7 +170,7 @@ namespace pneuma
                                                                   : loads.pressure(X, t);
               const Tensor<1, 3> area_vector = cross_product_3d(a0, a1);
               Tensor<1, 3>       dead_load   = material.density * H * g;
-              if (loaded && loads.has_surface_load())
+              if (surface_loaded)
                 dead_load += loads.surface_load(X, t);
 
               // tau_a = S grad_S N_a: the internal force of node a is

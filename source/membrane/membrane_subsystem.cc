@@ -167,12 +167,17 @@ namespace pneuma
                         "Materials/Region " + std::to_string(id),
                         "no cell of the mesh has material id "
                           + std::to_string(id));
-          for (const auto id : model.loads().pressure_regions())
-            check_input(std::find(all_ids.begin(), all_ids.end(), id)
-                          != all_ids.end(),
-                        "Loads/Pressure regions",
-                        "the mesh has no cells in region "
-                          + std::to_string(id));
+          for (const auto &[ids, entry] :
+               {std::make_pair(&model.loads().pressure_regions(),
+                               "Loads/Pressure regions"),
+                std::make_pair(&model.loads().surface_load_regions(),
+                               "Loads/Surface load regions")})
+            for (const auto id : *ids)
+              check_input(std::find(all_ids.begin(), all_ids.end(), id)
+                            != all_ids.end(),
+                          entry,
+                          "the mesh has no cells in region "
+                            + std::to_string(id));
         }
       dofs.distribute_dofs(*fe);
       owned_dofs    = dofs.locally_owned_dofs();

@@ -62,6 +62,10 @@ namespace pneuma
       /// True if the pressure acts on cells of material @p material_id.
       bool
       pressure_acts_on(const types::material_id material_id) const;
+      /// True if the surface load is on and acts on cells of material
+      /// @p material_id ("Surface load regions").
+      bool
+      surface_load_acts_on(const types::material_id material_id) const;
       /// Gravity vector [m/s^2] at pseudo time @p t.
       Tensor<1, 3>
       gravity(const double t) const;
@@ -92,6 +96,11 @@ namespace pneuma
       {
         return pressure_ids;
       }
+      const std::set<types::material_id> &
+      surface_load_regions() const
+      {
+        return surface_ids;
+      }
 
     private:
       /// The pressure expression does not use the position.
@@ -100,10 +109,10 @@ namespace pneuma
       std::unique_ptr<Functions::ParsedFunction<3>> gravity_function;
       std::unique_ptr<Functions::ParsedFunction<3>> surface_function;
       std::unique_ptr<Functions::ParsedFunction<3>> line_function;
-      /// Entries "Pressure regions" and "Line load boundaries" as given,
-      /// and the ids parsed from them.
-      std::string                  pressure_regions_text, line_load_text;
-      std::set<types::material_id> pressure_ids;
+      /// Entries "Pressure regions", "Surface load regions" and "Line
+      /// load boundaries" as given, and the ids parsed from them.
+      std::string pressure_regions_text, surface_regions_text, line_load_text;
+      std::set<types::material_id> pressure_ids, surface_ids;
       std::set<types::boundary_id> line_load_ids;
       /// Entries "Gravity" and "Surface load".
       bool gravity_on = false, surface_load_on = false;
