@@ -181,6 +181,17 @@ namespace pneuma
           });
         }
       id.a_loc = d.values.data();
+      // MUMPS needs the same JOB on every rank: a pattern that changed on
+      // one rank only (contact adding entries to its rows) is a new
+      // analysis everywhere.
+      int same_everywhere = same_pattern ? 1 : 0;
+      MPI_Allreduce(MPI_IN_PLACE,
+                    &same_everywhere,
+                    1,
+                    MPI_INT,
+                    MPI_MIN,
+                    MPI_Comm_f2c(id.comm_fortran));
+      same_pattern = same_everywhere == 1;
       if (!same_pattern)
         {
           d.n        = A.m();
