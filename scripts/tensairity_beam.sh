@@ -18,20 +18,9 @@ source "$root/scripts/mpi_environment.sh"
 cd "$root"
 out=output/tensairity_beam
 mkdir -p "$out"
-run() { # name, parameter file, arguments...
-  local name=$1 file=$2 code=0
-  shift 2
-  echo "$name: running"
-  "$root/build/pneuma" "$file" --set "Output/Directory=$out/$name" "$@" \
-    > "$out/$name.log" 2>&1 || code=$?
-  tail -n 1 "$out/$name.log"
-  if [ "$code" -ne 0 ] && [ "$code" -ne 2 ]; then
-    echo "$name failed (exit $code), see $out/$name.log" >&2
-    exit "$code"
-  fi
-}
-run tensairity parameter_files/tensairity_beam.prm "$@"
-run airbeam parameter_files/airbeam_figure7.prm \
+source "$root/scripts/scene_tools.sh"
+scene_run tensairity parameter_files/tensairity_beam.prm "$@"
+scene_run airbeam parameter_files/airbeam_figure7.prm \
   --set "Chambers/Chamber 1/Gas/Pressure/Function constants=p0=1e5" \
   --set "Discretisation/Polynomial degree=2" \
   --set "Geometry/Global refinements=2" "$@"
@@ -51,15 +40,4 @@ for p in s["contact"]:
     print("contact of helix %d: %d of %d points active, %.0f N in all"
           % (p["pair"], p["active_points"], p["points"], p["total_force"]))
 PY
-if command -v pvbatch > /dev/null; then
-  render=(pvbatch)
-  [ -z "${DISPLAY:-}" ] && command -v xvfb-run > /dev/null &&
-    render=(xvfb-run -a -s "-screen 0 1920x1080x24" pvbatch)
-  for name in tensairity airbeam; do
-    "${render[@]}" "$root/scripts/render_state.py" "$out/$name" "$out/$name.png" \
-      --title "$name, last converged state" 2>/dev/null | grep written ||
-      echo "$name: no picture (pvbatch failed)"
-  done
-else
-  echo "pvbatch not found: install paraview (and xvfb) for pictures of the deformed beams"
-fi
+scene_pictures tensairity airbeam

@@ -22,26 +22,11 @@ source "$root/scripts/mpi_environment.sh"
 cd "$root"
 out=output/waterbeam_bending
 mkdir -p "$out"
-run() { # name, parameter file, arguments...
-  local name=$1 file=$2 code=0
-  shift 2
-  echo "$name: running"
-  "$root/build/pneuma" "$file" --set "Output/Directory=$out/$name" "$@" \
-    > "$out/$name.log" 2>&1 || code=$?
-  tail -n 1 "$out/$name.log"
-  # Exit 2 is a curve that ends where the structure gives way.
-  if [ "$code" -ne 0 ] && [ "$code" -ne 2 ]; then
-    echo "$name failed (exit $code), see $out/$name.log" >&2
-    exit "$code"
-  fi
-}
-run gas parameter_files/waterbeam_bending.prm "$@"
-run water parameter_files/waterbeam_bending.prm \
-  --set "Chambers/Chamber 3/Filling=liquid and gas" \
-  --set "Chambers/Chamber 3/Gas/Seal time=2" \
-  --set "Chambers/Chamber 3/Liquid/Volume/Function expression=0.005*min(max(t-1,0),1)" "$@"
+source "$root/scripts/scene_tools.sh"
+scene_run gas parameter_files/waterbeam_bending.prm "$@"
+scene_run water parameter_files/waterbeam_bending.prm "${waterbeam_water[@]}" "$@"
 # The airbeam: the main job's tube with the waterbeam's gas, wall and load.
-run airbeam parameter_files/airbeam.prm \
+scene_run airbeam parameter_files/airbeam.prm \
   --set "Geometry/Global refinements=3" \
   --set "Materials/Region 0/Wrinkling=tension field" \
   --set "Loads/Pressure/Function expression=0" \
@@ -67,15 +52,4 @@ run airbeam parameter_files/airbeam.prm \
   "waterbeam, chamber 2 gas:$out/gas:2:4:1" \
   "waterbeam, chamber 2 water:$out/water:2:4:1" \
   "airbeam:$out/airbeam:1:0:1"
-if command -v pvbatch > /dev/null; then
-  render=(pvbatch)
-  [ -z "${DISPLAY:-}" ] && command -v xvfb-run > /dev/null &&
-    render=(xvfb-run -a -s "-screen 0 1920x1080x24" pvbatch)
-  for name in gas water airbeam; do
-    "${render[@]}" "$root/scripts/render_state.py" "$out/$name" "$out/$name.png" \
-      --title "$name, last converged state" 2>/dev/null | grep written ||
-      echo "$name: no picture (pvbatch failed)"
-  done
-else
-  echo "pvbatch not found: install paraview (and xvfb) for pictures of the deformed beams"
-fi
+scene_pictures gas water airbeam

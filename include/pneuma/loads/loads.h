@@ -81,11 +81,6 @@ namespace pneuma
       {
         return gravity_on;
       }
-      bool
-      has_surface_load() const
-      {
-        return surface_load_on;
-      }
       const std::set<types::boundary_id> &
       line_load_boundaries() const
       {
