@@ -19,11 +19,16 @@ timing() { # summary.json timer
 field() {
   grep -o "\"$1\": [0-9][0-9.e+-]*" out/helix/summary.json | head -1 | awk '{print $NF}'
 }
+for normal in facet smoothed; do
+echo
+echo "Master normal = $normal"
+echo
 echo "| cable elements | contact points (active) | Newton its | membrane assembly s | contact s | search s | contact / membrane | linear solve s | wall s | peak MB |"
 echo "|---|---|---|---|---|---|---|---|---|---|"
 for n in 100 500 2000; do
   /usr/bin/time -f "%e %M" -o time.txt "$pneuma" helix_on_tube.prm \
-    --set "Cables/Cable 1/Number of elements=$n" > /dev/null
+    --set "Cables/Cable 1/Number of elements=$n" \
+    --set "Contact/Pair 1/Master normal=$normal" > /dev/null
   read -r wall kb < time.txt
   a=$(timing assembly); c=$(timing contact); k=$(timing "cable assembly")
   srch=$(timing "contact search"); ls=$(timing "linear solve")
@@ -32,5 +37,6 @@ for n in 100 500 2000; do
     "$n" "$(field points)" "$(field active_points)" "$(field newton_iterations)" \
     "$m" "$c" "${srch:-0}" "$(awk -v m="$m" -v c="$c" -v s="${srch:-0}" 'BEGIN{print 100*(c+s)/m}')" \
     "$ls" "$wall" "$((kb / 1024))"
+done
 done
 rm -f time.txt

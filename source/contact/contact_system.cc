@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_system.h>
+#include <deal.II/numerics/rtree.h>
 
 #include <pneuma/contact/contact_system.h>
 #include <pneuma/core/checkpoint.h>
@@ -8,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -249,6 +251,21 @@ namespace pneuma
         }
     }
 
+    std::vector<std::pair<BoundingBox<3>, unsigned int>>
+    ContactSystem::master_boxes(const ContactPair &p, const LA::Vector *u) const
+    {
+      std::vector<std::pair<BoundingBox<3>, unsigned int>> boxes;
+      for (unsigned int m = 0; m < masters.size(); ++m)
+        {
+          if (!p.regions.empty() && !p.regions.count(masters[m].material))
+            continue;
+          const auto box = bounding_box(patch(masters[m], p.outside, u));
+          boxes.emplace_back(
+            BoundingBox<3>({Point<3>(box.first), Point<3>(box.second)}), m);
+        }
+      return boxes;
+    }
+
     bool
     ContactSystem::update_candidates(const LA::Vector *u)
     {
@@ -259,17 +276,11 @@ namespace pneuma
         {
           PairData          &d = pairs[k];
           const ContactPair &p = parameters.all()[k];
-          // Current boxes of the master cells of this pair.
-          std::vector<std::pair<Tensor<1, 3>, Tensor<1, 3>>> boxes;
-          std::vector<unsigned int>                          ids;
-          for (unsigned int m = 0; m < masters.size(); ++m)
-            {
-              if (!p.regions.empty() && !p.regions.count(masters[m].material))
-                continue;
-              boxes.push_back(bounding_box(patch(masters[m], p.outside, u)));
-              ids.push_back(m);
-            }
+          // An R-tree of the current boxes of the master cells of this pair
+          // (O(log M) per cable cell instead of a scan of all M boxes).
+          const auto   tree  = pack_rtree(master_boxes(p, u));
           const double reach = d.radius + d.search;
+          std::vector<std::pair<BoundingBox<3>, unsigned int>> hits;
           for (unsigned int c = 0; c < d.cell_dofs.size(); ++c)
             {
               std::array<Tensor<1, 3>, 2> x = d.cell_reference[c];
@@ -277,24 +288,28 @@ namespace pneuma
                 for (unsigned int v = 0; v < 2; ++v)
                   for (unsigned int i = 0; i < 3; ++i)
                     x[v][i] += (*u)[d.cell_dofs[c][3 * v + i]];
-              std::vector<unsigned int> found;
-              for (unsigned int b = 0; b < boxes.size(); ++b)
+              Point<3> lower, upper;
+              for (unsigned int i = 0; i < 3; ++i)
                 {
-                  bool overlap = true;
-                  for (unsigned int i = 0; i < 3 && overlap; ++i)
-                    overlap =
-                      std::min(x[0][i], x[1][i]) - reach <= boxes[b].second[i]
-                      && std::max(x[0][i], x[1][i]) + reach
-                           >= boxes[b].first[i];
-                  if (overlap)
-                    {
-                      found.push_back(ids[b]);
-                      if (coupled
-                            .insert(std::array<unsigned int, 3>{{k, c, ids[b]}})
-                            .second)
-                        grown = true;
-                    }
+                  lower[i] = std::min(x[0][i], x[1][i]) - reach;
+                  upper[i] = std::max(x[0][i], x[1][i]) + reach;
                 }
+              // Closed boxes: touching counts, as a box scan with <= would.
+              hits.clear();
+              tree.query(boost::geometry::index::intersects(
+                           BoundingBox<3>({lower, upper})),
+                         std::back_inserter(hits));
+              std::vector<unsigned int> found;
+              found.reserve(hits.size());
+              for (const auto &hit : hits)
+                found.push_back(hit.second);
+              // In master order, whatever the tree's: the projections and
+              // their sums do not depend on the search structure.
+              std::sort(found.begin(), found.end());
+              for (const unsigned int m : found)
+                if (coupled.insert(std::array<unsigned int, 3>{{k, c, m}})
+                      .second)
+                  grown = true;
               d.candidates[c] = found;
             }
         }
@@ -705,22 +720,25 @@ namespace pneuma
             cell_points[d.points[q].cable_cell].push_back(q);
           unsigned int missed = 0;
           const double reach  = d.radius + d.search;
-          for (unsigned int m = 0; m < masters.size(); ++m)
+          const auto   tree   = pack_rtree(master_boxes(p, &u));
+          std::vector<std::pair<BoundingBox<3>, unsigned int>> hits;
+          for (unsigned int c = 0; c < d.cell_dofs.size(); ++c)
             {
-              if (!p.regions.empty() && !p.regions.count(masters[m].material))
-                continue;
-              const auto box = bounding_box(current(m));
-              for (unsigned int c = 0; c < d.cell_dofs.size(); ++c)
+              Point<3> lower, upper;
+              for (unsigned int i = 0; i < 3; ++i)
                 {
-                  const auto &cand = d.candidates[c];
-                  bool        near = true;
-                  for (unsigned int i = 0; i < 3 && near; ++i)
-                    near = std::min(slave[c][0][i], slave[c][1][i]) - reach
-                             <= box.second[i]
-                           && std::max(slave[c][0][i], slave[c][1][i]) + reach
-                                >= box.first[i];
-                  if (!near
-                      || std::find(cand.begin(), cand.end(), m) != cand.end())
+                  lower[i] = std::min(slave[c][0][i], slave[c][1][i]) - reach;
+                  upper[i] = std::max(slave[c][0][i], slave[c][1][i]) + reach;
+                }
+              hits.clear();
+              tree.query(boost::geometry::index::intersects(
+                           BoundingBox<3>({lower, upper})),
+                         std::back_inserter(hits));
+              const auto &cand = d.candidates[c];
+              for (const auto &hit : hits)
+                {
+                  const unsigned int m = hit.second;
+                  if (std::find(cand.begin(), cand.end(), m) != cand.end())
                     continue;
                   for (const unsigned int q : cell_points[c])
                     {

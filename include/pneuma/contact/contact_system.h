@@ -27,6 +27,7 @@
  * continuous normal, so its tangent is not symmetric (the LU is chosen).
  */
 
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/index_set.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
@@ -230,6 +231,15 @@ namespace pneuma
             const bool        outside,
             const LA::Vector *u,
             NodalNormals     *normals = nullptr) const;
+
+      /**
+       * The current bounding boxes of the master cells of pair @p p (of its
+       * regions) with their indices in `masters`, the leaves of the
+       * R-tree that the search and the step check query (u = nullptr: the
+       * reference).
+       */
+      std::vector<std::pair<BoundingBox<3>, unsigned int>>
+      master_boxes(const ContactPair &p, const LA::Vector *u) const;
 
       /**
        * The map from the variables of a point's contact terms on master
