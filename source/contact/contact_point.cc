@@ -70,23 +70,39 @@ namespace pneuma
                   dd[a][b][c] = 0.;
               }
           }
+        // Each node's weights once (the products are the same as inline,
+        // so the sums are bitwise unchanged); a bilinear patch has no
+        // rho_11, rho_22. This is the inner loop of the contact's nested
+        // automatic differentiation.
         const unsigned int n = degree + 1;
         for (unsigned int j = 0; j < n; ++j)
           for (unsigned int i = 0; i < n; ++i)
             {
-              const auto &p = y[i + n * j];
+              const auto  &p   = y[i + n * j];
+              const Number w   = l1[i] * l2[j];
+              const Number w1  = dl1[i] * l2[j];
+              const Number w2  = l1[i] * dl2[j];
+              const Number w12 = dl1[i] * dl2[j];
               for (unsigned int c = 0; c < 3; ++c)
                 {
-                  rho[c] += l1[i] * l2[j] * p[c];
-                  d[0][c] += dl1[i] * l2[j] * p[c];
-                  d[1][c] += l1[i] * dl2[j] * p[c];
-                  dd[0][0][c] += ddl1[i] * l2[j] * p[c];
-                  dd[1][1][c] += l1[i] * ddl2[j] * p[c];
-                  dd[0][1][c] += dl1[i] * dl2[j] * p[c];
+                  rho[c] += w * p[c];
+                  d[0][c] += w1 * p[c];
+                  d[1][c] += w2 * p[c];
+                  dd[0][1][c] += w12 * p[c];
                 }
-              for (unsigned int c = 0; c < 3; ++c)
-                dd[1][0][c] = dd[0][1][c];
+              if (degree > 1)
+                {
+                  const Number w11 = ddl1[i] * l2[j];
+                  const Number w22 = l1[i] * ddl2[j];
+                  for (unsigned int c = 0; c < 3; ++c)
+                    {
+                      dd[0][0][c] += w11 * p[c];
+                      dd[1][1][c] += w22 * p[c];
+                    }
+                }
             }
+        for (unsigned int c = 0; c < 3; ++c)
+          dd[1][0][c] = dd[0][1][c];
       }
 
       /// One Newton step of min |x - rho(xi)|^2 / 2 on xi.
@@ -469,7 +485,14 @@ namespace pneuma
        * n, so the closed-form gradient of the circular case does not hold;
        * energy, gradient and Hessian come from nested (second-order)
        * Sacado numbers, again through two Newton steps of the projection.
-       * Variables: slave (6), section a1, a2 at both nodes (12), master.
+       * The point's axis x and section a1, a2 are linear in the slave's
+       * nodal values ((1 - eta) at node 0, eta at node 1), so the nested
+       * numbers carry the reduced variables x, a1, a2 (9) and the master
+       * nodes (@p n = 9 + 3 n_m) and the result is expanded to the slave's
+       * 18 nodal variables after: exact, and (21/30)^2 of the cost of
+       * differentiating in all 30 variables of a Q1 patch.
+       * Variables of the result: slave (6), section a1, a2 at both nodes
+       * (12), master.
        */
       template <int n>
       double
@@ -492,43 +515,81 @@ namespace pneuma
         AD2 x[3], a1[3], a2[3];
         for (unsigned int c = 0; c < 3; ++c)
           {
-            x[c] = (1. - eta) * variable(c, slave[0][c])
-                   + eta * variable(3 + c, slave[1][c]);
-            a1[c] = (1. - eta) * variable(6 + c, section.a1[0][c])
-                    + eta * variable(12 + c, section.a1[1][c]);
-            a2[c] = (1. - eta) * variable(9 + c, section.a2[0][c])
-                    + eta * variable(15 + c, section.a2[1][c]);
+            x[c] = variable(c, (1. - eta) * slave[0][c] + eta * slave[1][c]);
+            a1[c] =
+              variable(3 + c,
+                       (1. - eta) * section.a1[0][c] + eta * section.a1[1][c]);
+            a2[c] =
+              variable(6 + c,
+                       (1. - eta) * section.a2[0][c] + eta * section.a2[1][c]);
           }
         std::vector<std::array<AD2, 3>> y(n_m);
         for (unsigned int a = 0; a < n_m; ++a)
           for (unsigned int c = 0; c < 3; ++c)
-            y[a][c] = variable(18 + 3 * a + c, patch.nodes[a][c]);
-        AD2 xi[2] = {AD2(xi_converged[0]), AD2(xi_converged[1])};
-        newton_step(patch.degree, y, x, xi);
+            y[a][c] = variable(9 + 3 * a + c, patch.nodes[a][c]);
+        // The projection from the converged xi: the first Newton step
+        // need only carry exact first derivatives (the second step makes
+        // the second ones exact, as Newton's error is squared), so it is
+        // taken in first-order numbers and lifted.
+        AD2 xi[2];
+        {
+          AD1                             x1[3];
+          std::vector<std::array<AD1, 3>> y1(n_m);
+          for (unsigned int c = 0; c < 3; ++c)
+            x1[c] = x[c].val();
+          for (unsigned int a = 0; a < n_m; ++a)
+            for (unsigned int c = 0; c < 3; ++c)
+              y1[a][c] = y[a][c].val();
+          AD1 xi1[2] = {AD1(xi_converged[0]), AD1(xi_converged[1])};
+          newton_step(patch.degree, y1, x1, xi1);
+          for (unsigned int k = 0; k < 2; ++k)
+            {
+              xi[k] = AD2(xi1[k]);
+              xi[k].resize(n);
+              for (unsigned int i = 0; i < n; ++i)
+                xi[k].fastAccessDx(i) = AD1(xi1[k].dx(i));
+            }
+        }
         newton_step(patch.degree, y, x, xi);
         AD2       normal[3];
         const AD2 g =
           gap(patch.degree, y, x, xi, patch.sign, 0., normal, a1, a2);
+        const unsigned int n_full = 18 + 3 * n_m;
         if (gradient)
-          gradient->reinit(n);
+          gradient->reinit(n_full);
         if (hessian)
-          hessian->reinit(n, n);
+          hessian->reinit(n_full, n_full);
         if (g.val().val() >= 0.)
           return 0.;
         const AD2 energy = 0.5 * weight * penalty * g * g;
-        for (unsigned int i = 0; i < n; ++i)
+        // Full variable i = reduced variable r[i] times w[i]: x at the
+        // nodes (0-5), a1 and a2 at node 0 (6-11) and node 1 (12-17), the
+        // master nodes.
+        std::vector<unsigned int> r(n_full);
+        std::vector<double>       w(n_full, 1.);
+        for (unsigned int i = 0; i < n_full; ++i)
+          if (i < 6)
+            {
+              r[i] = i % 3;
+              w[i] = i < 3 ? 1. - eta : eta;
+            }
+          else if (i < 18)
+            {
+              r[i] = 3 + (i - 6) % 6;
+              w[i] = i < 12 ? 1. - eta : eta;
+            }
+          else
+            r[i] = i - 9;
+        for (unsigned int i = 0; i < n_full; ++i)
           {
             if (gradient)
-              (*gradient)(i) = energy.dx(i).val();
+              (*gradient)(i) = w[i] * energy.dx(r[i]).val();
             if (hessian)
-              for (unsigned int j = 0; j < n; ++j)
-                (*hessian)(i, j) = energy.dx(i).dx(j);
+              for (unsigned int j = 0; j <= i; ++j)
+                (*hessian)(i, j) = (*hessian)(j, i) =
+                  w[i] * w[j] * 0.5
+                  * (energy.dx(r[i]).dx(r[j]) + energy.dx(r[j]).dx(r[i]));
           }
-        if (hessian)
-          for (unsigned int a = 0; a < n; ++a)
-            for (unsigned int b = 0; b < a; ++b)
-              (*hessian)(a, b) = (*hessian)(b, a) =
-                0.5 * ((*hessian)(a, b) + (*hessian)(b, a));
         return energy.val().val();
       }
     } // namespace
@@ -734,7 +795,7 @@ namespace pneuma
 #undef PNEUMA_SMOOTHED
         }
       if (section)
-        return patch.degree == 1 ? penalty_terms_section<30>(patch,
+        return patch.degree == 1 ? penalty_terms_section<21>(patch,
                                                              *section,
                                                              slave,
                                                              eta,
@@ -743,7 +804,7 @@ namespace pneuma
                                                              xi,
                                                              gradient,
                                                              hessian)
-                                 : penalty_terms_section<45>(patch,
+                                 : penalty_terms_section<36>(patch,
                                                              *section,
                                                              slave,
                                                              eta,
