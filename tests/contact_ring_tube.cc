@@ -170,6 +170,13 @@ namespace
                          iterations <= 40 ? 1. : 0.,
                          1.,
                          0.);
+    // The smoothed force is not symmetric: LU, not the LDL^T that its
+    // numbering-dependent asymmetry measure could let through.
+    ok &= pneuma_test::check(std::string(name)
+                               + ": LU for the smoothed normal (1: yes)",
+                             s.get("factorization_symmetric") == 0. ? 1. : 0.,
+                             1.,
+                             0.);
     ok &= pneuma_test::check(std::string(name) + ": every point in contact",
                              active,
                              s.get("contact1_points"),

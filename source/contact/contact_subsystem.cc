@@ -114,6 +114,15 @@ namespace pneuma
         *a.field, *a.constraints, a.tangent, a.residual, a.probe);
     }
 
+    bool
+    ContactSubsystem::symmetric_tangent() const
+    {
+      for (const auto &p : parameters.all())
+        if (p.smoothed_normal)
+          return false;
+      return true;
+    }
+
     std::string
     ContactSubsystem::check_state(const LA::Vector &field) const
     {

@@ -171,6 +171,10 @@ namespace pneuma
           rotation_norm += std::abs(modes[c][k]);
       }
     solver.set_constant_modes(translations);
+    bool symmetric = true;
+    for (const auto &s : subsystems)
+      symmetric = symmetric && s->symmetric_tangent();
+    solver.set_symmetric_possible(symmetric);
     if (solver.type() == "amg" && Utilities::MPI::sum(rotation_norm, comm) > 0.)
       solver.set_rigid_body_modes(modes);
     solver.reset();

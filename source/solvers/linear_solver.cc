@@ -52,9 +52,11 @@ namespace pneuma
         "the factor entries and about 55 % of the work of LU; only the upper "
         "triangle is read, so the tangent must be symmetric); LU: the "
         "general one (friction in "
-        "slip, follower pressure on free edges); automatic: LDLT for every "
-        "tangent whose measured asymmetry is below 1e-10, else LU. With "
-        "Package = Amesos_Klu always LU.",
+        "slip, follower pressure on free edges, smoothed contact normals); "
+        "automatic: LU where a subsystem's tangent is not symmetric by "
+        "construction (a smoothed contact master normal), else LDLT for "
+        "every tangent whose measured asymmetry is below 1e-10, else LU. "
+        "With Package = Amesos_Klu always LU.",
         Patterns::Selection("automatic|LDLT|LU"));
       prm.add_parameter("Reuse factorization",
                         direct_settings.reuse_factorization,
@@ -116,6 +118,8 @@ namespace pneuma
         return false;
       if (direct_settings.factorization == "LDLT")
         return true;
+      if (!symmetric_possible)
+        return false;
       // Two products with A: negligible against a factorization.
       return asymmetry(A, A.locally_owned_range_indices()) < 1e-10;
     }

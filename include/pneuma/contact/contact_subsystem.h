@@ -73,6 +73,9 @@ namespace pneuma
                      const LA::Vector &field) const override;
       void
       add_output_fields(const LA::Vector &field) override;
+      /// False with a smoothed master normal on any pair.
+      bool
+      symmetric_tangent() const override;
 
     private:
       Model                         &model;

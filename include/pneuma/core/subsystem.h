@@ -232,6 +232,18 @@ namespace pneuma
       return 0.;
     }
 
+    /**
+     * False if this subsystem's tangent is not symmetric by construction
+     * (the smoothed master normal's contact force): the direct solver then
+     * takes the LU path, whatever the measured asymmetry of the assembled
+     * matrix (a random projection that a small, local asymmetric part
+     * passes below its threshold).
+     */
+    virtual bool
+    symmetric_tangent() const
+    {
+      return true;
+    }
     /// Adaptive refinement: cycles after the first run (0: none).
     virtual unsigned int
     refinement_cycles() const

@@ -65,6 +65,17 @@ namespace pneuma
       void
       set_rigid_body_modes(const std::vector<std::vector<double>> &modes);
 
+      /**
+       * Whether the matrices may be symmetric: false (a subsystem's
+       * tangent is not symmetric by construction) keeps the direct solver
+       * on the LU path unless `Factorization = LDLT` is asked for.
+       */
+      void
+      set_symmetric_possible(const bool possible)
+      {
+        symmetric_possible = possible;
+      }
+
       LinearSolver();
       ~LinearSolver();
 
@@ -214,6 +225,8 @@ namespace pneuma
       std::unique_ptr<SymmetricInertia> symmetric;
       /// The active factorization is the LDL^T.
       bool use_symmetric = false;
+      /// set_symmetric_possible().
+      bool symmetric_possible = true;
       /// The forcing term of set_forcing().
       double forcing = 0.;
       /// True while the factors are those of an earlier tangent (reuse).
