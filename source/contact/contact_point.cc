@@ -554,7 +554,7 @@ namespace pneuma
         AD2       normal[3];
         const AD2 g =
           gap(patch.degree, y, x, xi, patch.sign, 0., normal, a1, a2);
-        const unsigned int n_full = 18 + 3 * n_m;
+        constexpr unsigned int n_full = n + 9; // 18 + 3 n_m
         if (gradient)
           gradient->reinit(n_full);
         if (hessian)
@@ -565,8 +565,9 @@ namespace pneuma
         // Full variable i = reduced variable r[i] times w[i]: x at the
         // nodes (0-5), a1 and a2 at node 0 (6-11) and node 1 (12-17), the
         // master nodes.
-        std::vector<unsigned int> r(n_full);
-        std::vector<double>       w(n_full, 1.);
+        std::array<unsigned int, n_full> r;
+        std::array<double, n_full>       w;
+        w.fill(1.);
         for (unsigned int i = 0; i < n_full; ++i)
           if (i < 6)
             {

@@ -18,6 +18,39 @@ namespace pneuma
 {
   namespace contact
   {
+    namespace
+    {
+      /**
+       * The masters whose boxes in @p tree (ContactSystem::master_boxes)
+       * touch the box of the cable element @p x0 - @p x1 enlarged by
+       * @p reach, in master order (closed boxes: touching counts).
+       */
+      template <class Tree>
+      std::vector<unsigned int>
+      masters_near(const Tree         &tree,
+                   const Tensor<1, 3> &x0,
+                   const Tensor<1, 3> &x1,
+                   const double        reach)
+      {
+        Point<3> lower, upper;
+        for (unsigned int i = 0; i < 3; ++i)
+          {
+            lower[i] = std::min(x0[i], x1[i]) - reach;
+            upper[i] = std::max(x0[i], x1[i]) + reach;
+          }
+        std::vector<std::pair<BoundingBox<3>, unsigned int>> hits;
+        tree.query(boost::geometry::index::intersects(
+                     BoundingBox<3>({lower, upper})),
+                   std::back_inserter(hits));
+        std::vector<unsigned int> found;
+        found.reserve(hits.size());
+        for (const auto &hit : hits)
+          found.push_back(hit.second);
+        std::sort(found.begin(), found.end());
+        return found;
+      }
+    } // namespace
+
     ContactSystem::ContactSystem(const ContactParameters        &parameters,
                                  const geometry::SceneGenerator &geometry,
                                  const cables::CableSystem      &cables)
@@ -280,7 +313,6 @@ namespace pneuma
           // (O(log M) per cable cell instead of a scan of all M boxes).
           const auto   tree  = pack_rtree(master_boxes(p, u));
           const double reach = d.radius + d.search;
-          std::vector<std::pair<BoundingBox<3>, unsigned int>> hits;
           for (unsigned int c = 0; c < d.cell_dofs.size(); ++c)
             {
               std::array<Tensor<1, 3>, 2> x = d.cell_reference[c];
@@ -288,24 +320,9 @@ namespace pneuma
                 for (unsigned int v = 0; v < 2; ++v)
                   for (unsigned int i = 0; i < 3; ++i)
                     x[v][i] += (*u)[d.cell_dofs[c][3 * v + i]];
-              Point<3> lower, upper;
-              for (unsigned int i = 0; i < 3; ++i)
-                {
-                  lower[i] = std::min(x[0][i], x[1][i]) - reach;
-                  upper[i] = std::max(x[0][i], x[1][i]) + reach;
-                }
-              // Closed boxes: touching counts, as a box scan with <= would.
-              hits.clear();
-              tree.query(boost::geometry::index::intersects(
-                           BoundingBox<3>({lower, upper})),
-                         std::back_inserter(hits));
-              std::vector<unsigned int> found;
-              found.reserve(hits.size());
-              for (const auto &hit : hits)
-                found.push_back(hit.second);
               // In master order, whatever the tree's: the projections and
               // their sums do not depend on the search structure.
-              std::sort(found.begin(), found.end());
+              const auto found = masters_near(tree, x[0], x[1], reach);
               for (const unsigned int m : found)
                 if (coupled.insert(std::array<unsigned int, 3>{{k, c, m}})
                       .second)
@@ -721,23 +738,12 @@ namespace pneuma
           unsigned int missed = 0;
           const double reach  = d.radius + d.search;
           const auto   tree   = pack_rtree(master_boxes(p, &u));
-          std::vector<std::pair<BoundingBox<3>, unsigned int>> hits;
           for (unsigned int c = 0; c < d.cell_dofs.size(); ++c)
             {
-              Point<3> lower, upper;
-              for (unsigned int i = 0; i < 3; ++i)
-                {
-                  lower[i] = std::min(slave[c][0][i], slave[c][1][i]) - reach;
-                  upper[i] = std::max(slave[c][0][i], slave[c][1][i]) + reach;
-                }
-              hits.clear();
-              tree.query(boost::geometry::index::intersects(
-                           BoundingBox<3>({lower, upper})),
-                         std::back_inserter(hits));
               const auto &cand = d.candidates[c];
-              for (const auto &hit : hits)
+              for (const unsigned int m :
+                   masters_near(tree, slave[c][0], slave[c][1], reach))
                 {
-                  const unsigned int m = hit.second;
                   if (std::find(cand.begin(), cand.end(), m) != cand.end())
                     continue;
                   for (const unsigned int q : cell_points[c])
