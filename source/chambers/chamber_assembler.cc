@@ -20,6 +20,10 @@ namespace pneuma
   {
     namespace
     {
+      /// dof[a][c]: the cell dof of node a, component c.
+      using NodeDofs =
+        std::array<std::array<unsigned int, 3>, membrane::max_cell_nodes>;
+
       const UpdateFlags wall_flags =
         update_values | update_gradients | update_normal_vectors
         | update_quadrature_points | update_JxW_values;
@@ -34,19 +38,36 @@ namespace pneuma
                area = 0.;
       };
 
+      /// One quadrature point of a wall: the frame E_1, E_2 (E_1 x E_2 the
+      /// normal the wall's sign refers to), the weight, the reference
+      /// position, and per node the shape value N_a and the derivatives
+      /// dN_a/dS_alpha along the frame.
+      struct WallPoint
+      {
+        Tensor<1, 3>                                                E[2];
+        double                                                      JxW = 0.;
+        Point<3>                                                    X;
+        std::array<double, membrane::max_cell_nodes>                N;
+        std::array<std::array<double, 2>, membrane::max_cell_nodes> dN;
+      };
+
       /**
-       * Integrate the wall terms of one chamber over the quadrature of
-       * @p fe_values: with @p liquid the hydrostatic pressure on wetted
-       * points (the quadrature covers the wetted part only), else the gas
-       * pressure and the volume.
+       * Integrate the wall terms of one chamber over @p n_q points, the
+       * point q given by @p point_at(q, point): with @p liquid the
+       * hydrostatic pressure on wetted points (the points cover the wetted
+       * part only), else the gas pressure and the volume.
        *
        * The element is FE_Q^3 (degree 1 or 2): every dof is a (node,
-       * component) pair with the node's scalar shape function, so values
-       * and gradients are taken once per node and the tangent is built in
-       * 3x3 node blocks, on fixed-size arrays (no allocation per cell).
+       * component) pair (@p dof) with the node's scalar shape function, so
+       * the tangent is built in 3x3 node blocks, on fixed-size arrays (no
+       * allocation per cell).
        */
+      template <typename PointAt>
       void
-      integrate(const FEValues<2, 3>      &fe_values,
+      integrate(const unsigned int         n_q,
+                const PointAt             &point_at,
+                const NodeDofs            &dof,
+                const unsigned int         n_nodes,
                 const std::vector<double> &local_u,
                 const double               s,
                 const ChamberLoad         &load,
@@ -55,41 +76,26 @@ namespace pneuma
                 const double               g,
                 CellIntegrals             &out)
       {
-        constexpr unsigned int max_nodes = membrane::max_cell_nodes;
-        const auto            &fe        = fe_values.get_fe();
-        const unsigned int     n_nodes   = fe.n_dofs_per_cell() / 3;
-        // dof[a][c]: the cell dof of component c at node a.
-        const auto   dof   = membrane::node_dofs(fe);
         const double rho_g = load.density * g;
-
-        std::array<double, max_nodes>                N;
-        std::array<Tensor<1, 3>, max_nodes>          grad;
-        std::array<std::array<double, 2>, max_nodes> dN;
-        for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+        WallPoint    P;
+        for (unsigned int q = 0; q < n_q; ++q)
           {
-            const membrane::TangentFrame frame =
-              membrane::tangent_frame(fe_values.normal_vector(q));
-            Tensor<2, 3> Gu;
+            point_at(q, P);
+            const auto  &N    = P.N;
+            const auto  &dN   = P.dN;
+            Tensor<1, 3> a[2] = {P.E[0], P.E[1]};
             Tensor<1, 3> u_q;
-            for (unsigned int a = 0; a < n_nodes; ++a)
-              {
-                const unsigned int i0 = dof[a][0];
-                grad[a]  = fe_values.shape_grad_component(i0, q, 0);
-                N[a]     = fe_values.shape_value_component(i0, q, 0);
-                dN[a][0] = grad[a] * frame.e[0];
-                dN[a][1] = grad[a] * frame.e[1];
-                for (unsigned int c = 0; c < 3; ++c)
-                  {
-                    const double uc = local_u[dof[a][c]];
-                    u_q[c] += uc * N[a];
-                    for (unsigned int d = 0; d < 3; ++d)
-                      Gu[c][d] += uc * grad[a][d];
-                  }
-              }
-            const auto         a     = membrane::deformed_tangents(frame, Gu);
+            for (unsigned int n = 0; n < n_nodes; ++n)
+              for (unsigned int c = 0; c < 3; ++c)
+                {
+                  const double uc = local_u[dof[n][c]];
+                  u_q[c] += uc * N[n];
+                  a[0][c] += uc * dN[n][0];
+                  a[1][c] += uc * dN[n][1];
+                }
             const Tensor<1, 3> av    = s * cross_product_3d(a[0], a[1]);
-            const Point<3>     x     = fe_values.quadrature_point(q) + u_q;
-            const double       dA    = fe_values.JxW(q);
+            const Point<3>     x     = P.X + u_q;
+            const double       dA    = P.JxW;
             const double       depth = load.level + unit_gravity * x;
             double             p     = load.gas_pressure;
             if (liquid)
@@ -156,6 +162,77 @@ namespace pneuma
           }
       }
 
+      /// The points of a cell in the membrane kernel's reference data.
+      auto
+      reference_points(const membrane::ReferenceGeometry &reference,
+                       const unsigned int                 cell_index)
+      {
+        return [&reference, cell_index](const unsigned int q, WallPoint &P) {
+          const auto   &R  = reference.point(cell_index, q);
+          const double *N  = reference.shape_values(q);
+          const auto   *dN = reference.shape_derivatives(cell_index, q);
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              P.E[0][d] = R.E[0][d];
+              P.E[1][d] = R.E[1][d];
+              P.X[d]    = R.X[d];
+            }
+          P.JxW = R.JxW;
+          for (unsigned int a = 0; a < reference.n_nodes(); ++a)
+            {
+              P.N[a]  = N[a];
+              P.dN[a] = dN[a];
+            }
+        };
+      }
+
+      /// The points of @p fe_values (reinit'ed on a cell; values,
+      /// gradients, normals, points, JxW), with the frame about the normal
+      /// turned by @p orientation (+-1).
+      auto
+      fe_points(const FEValues<2, 3> &fe_values,
+                const NodeDofs       &dof,
+                const unsigned int    n_nodes,
+                const double          orientation)
+      {
+        return [&, n_nodes, orientation](const unsigned int q, WallPoint &P) {
+          const membrane::TangentFrame frame =
+            membrane::tangent_frame(orientation * fe_values.normal_vector(q));
+          P.E[0] = frame.e[0];
+          P.E[1] = frame.e[1];
+          P.X    = fe_values.quadrature_point(q);
+          P.JxW  = fe_values.JxW(q);
+          for (unsigned int a = 0; a < n_nodes; ++a)
+            {
+              const Tensor<1, 3> grad =
+                fe_values.shape_grad_component(dof[a][0], q, 0);
+              P.N[a]     = fe_values.shape_value_component(dof[a][0], q, 0);
+              P.dN[a][0] = grad * frame.e[0];
+              P.dN[a][1] = grad * frame.e[1];
+            }
+        };
+      }
+
+      /// Mean reference position and normal E_1 x E_2 of a cell of the
+      /// reference data.
+      std::pair<Point<3>, Tensor<1, 3>>
+      reference_centre_and_normal(const membrane::ReferenceGeometry &reference,
+                                  const unsigned int                 cell_index)
+      {
+        Point<3>           x;
+        Tensor<1, 3>       n;
+        const unsigned int n_q = reference.n_q_points();
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const auto        &R = reference.point(cell_index, q);
+            const Tensor<1, 3> e0({R.E[0][0], R.E[0][1], R.E[0][2]});
+            const Tensor<1, 3> e1({R.E[1][0], R.E[1][1], R.E[1][2]});
+            x += Point<3>(R.X[0], R.X[1], R.X[2]) / n_q;
+            n += cross_product_3d(e0, e1);
+          }
+        return {x, n};
+      }
+
       /// Mean reference position and normal of a cell.
       std::pair<Point<3>, Tensor<1, 3>>
       cell_centre_and_normal(const FEValues<2, 3> &fe_values)
@@ -171,13 +248,17 @@ namespace pneuma
       }
 
       /// The hydrostatic terms of one wall over its wetted part: the whole
-      /// cell (@p fe_values) if wet, the generated rule if cut.
+      /// cell (its reference points) if wet, the generated rule if cut
+      /// (with the frame turned to the reference normal @p normal).
       void
       integrate_wetted(const FreeSurfaceQuadrature::Location at,
                        const FreeSurfaceQuadrature          &free_surface,
                        const Mapping<2, 3>                  &mapping,
                        const DoFHandler<2, 3>::active_cell_iterator &cell,
-                       const FEValues<2, 3>                         &fe_values,
+                       const membrane::ReferenceGeometry            &reference,
+                       const unsigned int                            cell_index,
+                       const Tensor<1, 3>                           &normal,
+                       const NodeDofs                               &dof,
                        const std::vector<double>                    &local_u,
                        const double                                  s,
                        const ChamberLoad                            &load,
@@ -185,16 +266,41 @@ namespace pneuma
                        const double        g,
                        CellIntegrals      &out)
       {
+        const unsigned int n_nodes = reference.n_nodes();
         if (at == FreeSurfaceQuadrature::Location::wet)
-          integrate(fe_values, local_u, s, load, true, unit_gravity, g, out);
+          integrate(reference.n_q_points(),
+                    reference_points(reference, cell_index),
+                    dof,
+                    n_nodes,
+                    local_u,
+                    s,
+                    load,
+                    true,
+                    unit_gravity,
+                    g,
+                    out);
         else if (at == FreeSurfaceQuadrature::Location::cut)
           {
             FEValues<2, 3> cut_values(mapping,
-                                      fe_values.get_fe(),
+                                      cell->get_fe(),
                                       free_surface.wet_quadrature(),
                                       wall_flags);
             cut_values.reinit(cell);
-            integrate(cut_values, local_u, s, load, true, unit_gravity, g, out);
+            Tensor<1, 3> n;
+            for (unsigned int q = 0; q < cut_values.n_quadrature_points; ++q)
+              n += cut_values.normal_vector(q);
+            integrate(
+              cut_values.n_quadrature_points,
+              fe_points(cut_values, dof, n_nodes, n * normal >= 0. ? 1. : -1.),
+              dof,
+              n_nodes,
+              local_u,
+              s,
+              load,
+              true,
+              unit_gravity,
+              g,
+              out);
           }
       }
     } // namespace
@@ -207,10 +313,13 @@ namespace pneuma
     }
 
     void
-    ChamberAssembler::reinit(const Mapping<2, 3>    &mapping_,
-                             const DoFHandler<2, 3> &dof_handler_,
-                             const unsigned int      degree_)
+    ChamberAssembler::reinit(
+      const Mapping<2, 3>                                 &mapping_,
+      const DoFHandler<2, 3>                              &dof_handler_,
+      const unsigned int                                   degree_,
+      std::function<const membrane::ReferenceGeometry &()> reference_)
     {
+      reference         = std::move(reference_);
       mapping           = &mapping_;
       dof_handler       = &dof_handler_;
       degree            = degree_;
@@ -351,6 +460,17 @@ namespace pneuma
         }
     }
 
+    ChamberAssembler::Pass::Scratch::Scratch(const ChamberAssembler &assembler)
+      : free_surface(assembler.degree, assembler.degree + 2)
+      , support_values(*assembler.mapping,
+                       assembler.dof_handler->get_fe(),
+                       Quadrature<2>(free_surface.support_points()),
+                       update_values | update_quadrature_points)
+      , u_support(free_surface.support_points().size())
+      , psi(u_support.size())
+    {
+    }
+
     ChamberAssembler::Pass::Pass(const ChamberAssembler          &assembler,
                                  const LA::Vector                &u,
                                  const AffineConstraints<double> &constraints,
@@ -363,23 +483,8 @@ namespace pneuma
       , loads(loads)
       , measures(measures)
       , with_vectors(with_vectors)
-      , quadrature(assembler.degree + 1)
-      , fe_values(*assembler.mapping,
-                  assembler.dof_handler->get_fe(),
-                  quadrature,
-                  wall_flags)
-      , free_surface(assembler.degree, assembler.degree + 2)
-      , support_values(*assembler.mapping,
-                       assembler.dof_handler->get_fe(),
-                       Quadrature<2>(free_surface.support_points()),
-                       update_values | update_quadrature_points)
-      , u_support(free_surface.support_points().size())
-      , psi(u_support.size())
+      , own_scratch(assembler)
     {
-      const unsigned int n_dofs =
-        assembler.dof_handler->get_fe().n_dofs_per_cell();
-      cell_q.reinit(n_dofs);
-      cell_ql.reinit(n_dofs);
       const unsigned int n    = assembler.parameters.chambers.size();
       const MPI_Comm     comm = assembler.dof_handler->get_communicator();
       measures.resize(n);
@@ -401,39 +506,78 @@ namespace pneuma
     void
     ChamberAssembler::Pass::cell(
       const DoFHandler<2, 3>::active_cell_iterator &cell,
+      const unsigned int                            cell_index,
       const std::vector<double>                    &local_u,
       FullMatrix<double>                           *cell_matrix,
       Vector<double>                               *cell_residual,
-      const std::vector<types::global_dof_index>   &dof_indices,
-      const FEValues<2, 3>                         *reinit_values)
+      const std::vector<types::global_dof_index>   &dof_indices)
     {
+      compute(cell,
+              assembler.reference(),
+              cell_index,
+              local_u,
+              cell_matrix,
+              cell_residual,
+              own_scratch,
+              own_record);
+      commit(own_record, dof_indices);
+    }
+
+    void
+    ChamberAssembler::Pass::compute(
+      const DoFHandler<2, 3>::active_cell_iterator &cell,
+      const membrane::ReferenceGeometry            &reference,
+      const unsigned int                            cell_index,
+      const std::vector<double>                    &local_u,
+      FullMatrix<double>                           *cell_matrix,
+      Vector<double>                               *cell_residual,
+      Scratch                                      &scratch,
+      Record                                       &record) const
+    {
+      record.n_walls    = 0;
       const auto &walls = assembler.walls_of(cell->material_id());
       if (walls.empty())
         return;
       const FEValuesExtractors::Vector displacement(0);
-      if (!reinit_values)
-        fe_values.reinit(cell);
-      const FEValues<2, 3> &fe_values =
-        reinit_values ? *reinit_values : this->fe_values;
-      const auto [x_mean, n_mean] = cell_centre_and_normal(fe_values);
-      bool support_ready          = false;
-      for (const auto &[c, rs] : walls)
+      const unsigned int               n_nodes = reference.n_nodes();
+      NodeDofs                         dof{};
+      for (unsigned int i = 0; i < 3 * n_nodes; ++i)
+        dof[reference.node(i)][reference.component(i)] = i;
+      const auto [x_mean, n_mean] =
+        reference_centre_and_normal(reference, cell_index);
+      bool support_ready = false;
+      if (record.walls.size() < walls.size())
         {
+          record.walls.resize(walls.size());
+          for (auto &w : record.walls)
+            {
+              w.q.reinit(3 * n_nodes);
+              w.q_liquid.reinit(3 * n_nodes);
+            }
+        }
+      for (unsigned int k = 0; k < walls.size(); ++k)
+        {
+          const auto &[c, rs]     = walls[k];
+          Wall &wall              = record.walls[k];
+          wall.chamber            = c;
           const double       s    = wall_sign(assembler.geometry,
                                      assembler.parameters.chambers[c],
                                      rs,
                                      x_mean,
                                      n_mean);
           const ChamberLoad &load = loads[c];
-          cell_q                  = 0;
+          wall.q                  = 0;
           CellIntegrals out;
           out.matrix   = cell_matrix;
           out.residual = cell_residual;
-          out.q        = with_vectors ? &cell_q : nullptr;
+          out.q        = with_vectors ? &wall.q : nullptr;
           // Liquid-only chambers need the gas pass (volume, q) only for
           // their measures, not in Newton's assemblies.
           if (load.gas || !with_vectors)
-            integrate(fe_values,
+            integrate(reference.n_q_points(),
+                      reference_points(reference, cell_index),
+                      dof,
+                      n_nodes,
                       local_u,
                       s,
                       load,
@@ -441,46 +585,70 @@ namespace pneuma
                       assembler.unit_gravity,
                       assembler.gravity_magnitude,
                       out);
+          wall.has_q_liquid = false;
           if (load.liquid)
             {
               if (!support_ready)
                 {
-                  support_values.reinit(cell);
-                  support_values[displacement].get_function_values(u,
-                                                                   u_support);
+                  scratch.support_values.reinit(cell);
+                  scratch.support_values[displacement].get_function_values(
+                    u, scratch.u_support);
                   support_ready = true;
                 }
-              for (unsigned int k = 0; k < psi.size(); ++k)
-                psi[k] = assembler.height(support_values.quadrature_point(k)
-                                          + u_support[k])
-                         - load.level;
-              cell_ql       = 0;
-              out.q         = with_vectors ? &cell_ql : nullptr;
-              const auto at = free_surface.classify(psi);
+              for (unsigned int i = 0; i < scratch.psi.size(); ++i)
+                scratch.psi[i] =
+                  assembler.height(scratch.support_values.quadrature_point(i)
+                                   + scratch.u_support[i])
+                  - load.level;
+              wall.q_liquid = 0;
+              out.q         = with_vectors ? &wall.q_liquid : nullptr;
+              const auto at = scratch.free_surface.classify(scratch.psi);
               integrate_wetted(at,
-                               free_surface,
+                               scratch.free_surface,
                                *assembler.mapping,
                                cell,
-                               fe_values,
+                               reference,
+                               cell_index,
+                               n_mean,
+                               dof,
                                local_u,
                                s,
                                load,
                                assembler.unit_gravity,
                                assembler.gravity_magnitude,
                                out);
-              if (with_vectors && at != FreeSurfaceQuadrature::Location::dry)
-                constraints.distribute_local_to_global(cell_ql,
-                                                       dof_indices,
-                                                       measures[c].q_liquid);
+              wall.has_q_liquid =
+                with_vectors && at != FreeSurfaceQuadrature::Location::dry;
             }
-          auto &m = measures[c];
-          m.volume += out.volume;
-          m.wall_area += out.area;
-          m.liquid_volume += out.liquid_volume;
-          m.free_surface_area += out.free_surface;
-          m.wetted_area += out.wetted;
+          wall.volume        = out.volume;
+          wall.area          = out.area;
+          wall.liquid_volume = out.liquid_volume;
+          wall.free_surface  = out.free_surface;
+          wall.wetted        = out.wetted;
+        }
+      record.n_walls = walls.size();
+    }
+
+    void
+    ChamberAssembler::Pass::commit(
+      const Record                               &record,
+      const std::vector<types::global_dof_index> &dof_indices)
+    {
+      for (unsigned int k = 0; k < record.n_walls; ++k)
+        {
+          const Wall &wall = record.walls[k];
+          auto       &m    = measures[wall.chamber];
+          if (wall.has_q_liquid)
+            constraints.distribute_local_to_global(wall.q_liquid,
+                                                   dof_indices,
+                                                   m.q_liquid);
+          m.volume += wall.volume;
+          m.wall_area += wall.area;
+          m.liquid_volume += wall.liquid_volume;
+          m.free_surface_area += wall.free_surface;
+          m.wetted_area += wall.wetted;
           if (with_vectors)
-            constraints.distribute_local_to_global(cell_q, dof_indices, m.q);
+            constraints.distribute_local_to_global(wall.q, dof_indices, m.q);
         }
     }
 
@@ -520,10 +688,14 @@ namespace pneuma
       Vector<double>     cell_residual(n_dofs);
       std::vector<types::global_dof_index> dof_indices(n_dofs);
       std::vector<double>                  local_u(n_dofs);
+      // The index of each owned cell in the reference data.
+      unsigned int cell_index = 0;
       for (const auto &cell : dof_handler->active_cell_iterators())
         {
-          if (!cell->is_locally_owned()
-              || walls_of(cell->material_id()).empty())
+          if (!cell->is_locally_owned())
+            continue;
+          const unsigned int index = cell_index++;
+          if (walls_of(cell->material_id()).empty())
             continue;
           cell->get_dof_indices(dof_indices);
           for (unsigned int i = 0; i < n_dofs; ++i)
@@ -531,6 +703,7 @@ namespace pneuma
           cell_matrix   = 0;
           cell_residual = 0;
           pass.cell(cell,
+                    index,
                     local_u,
                     tangent ? &cell_matrix : nullptr,
                     residual ? &cell_residual : nullptr,
@@ -559,12 +732,14 @@ namespace pneuma
                                     const unsigned int c,
                                     const double       level) const
     {
-      const auto           &fe     = dof_handler->get_fe();
-      const unsigned int    n_dofs = fe.n_dofs_per_cell();
-      const QGauss<2>       quadrature(degree + 1);
-      FEValues<2, 3>        fe_values(*mapping, fe, quadrature, wall_flags);
-      FreeSurfaceQuadrature free_surface(degree, degree + 2);
-      FEValues<2, 3>        support_values(*mapping,
+      const auto                        &fe     = dof_handler->get_fe();
+      const unsigned int                 n_dofs = fe.n_dofs_per_cell();
+      const membrane::ReferenceGeometry &ref    = reference();
+      NodeDofs                           dof{};
+      for (unsigned int i = 0; i < n_dofs; ++i)
+        dof[ref.node(i)][ref.component(i)] = i;
+      FreeSurfaceQuadrature            free_surface(degree, degree + 2);
+      FEValues<2, 3>                   support_values(*mapping,
                                     fe,
                                     Quadrature<2>(
                                       free_surface.support_points()),
@@ -580,10 +755,12 @@ namespace pneuma
       load.density = parameters.chambers[c].density;
       CellIntegrals out;
 
+      unsigned int cell_index = 0;
       for (const auto &cell : dof_handler->active_cell_iterators())
         {
           if (!cell->is_locally_owned())
             continue;
+          const unsigned int index = cell_index++;
           for (const auto &[chamber, rs] : walls_of(cell->material_id()))
             {
               if (chamber != c)
@@ -597,18 +774,21 @@ namespace pneuma
               const auto at = free_surface.classify(psi);
               if (at == FreeSurfaceQuadrature::Location::dry)
                 continue;
-              fe_values.reinit(cell);
               cell->get_dof_indices(dof_indices);
               for (unsigned int i = 0; i < n_dofs; ++i)
                 local_u[i] = u[dof_indices[i]];
-              const auto [x_mean, n_mean] = cell_centre_and_normal(fe_values);
+              const auto [x_mean, n_mean] =
+                reference_centre_and_normal(ref, index);
               const double s =
                 wall_sign(geometry, parameters.chambers[c], rs, x_mean, n_mean);
               integrate_wetted(at,
                                free_surface,
                                *mapping,
                                cell,
-                               fe_values,
+                               ref,
+                               index,
+                               n_mean,
+                               dof,
                                local_u,
                                s,
                                load,

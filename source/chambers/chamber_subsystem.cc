@@ -69,7 +69,10 @@ namespace pneuma
     {
       assembler.reinit(membrane.mapping(),
                        membrane.dof_handler(),
-                       membrane.degree());
+                       membrane.degree(),
+                       [this]() -> const membrane::ReferenceGeometry & {
+                         return membrane.reference_geometry();
+                       });
       assembler.check_chambers();
     }
 
@@ -105,17 +108,45 @@ namespace pneuma
         assembler, *a.field, *a.constraints, pass_loads, measures, true);
     }
 
-    void
-    ChamberSubsystem::cell(
-      const DoFHandler<2, 3>::active_cell_iterator &cell,
-      const FEValues<2, 3>                         &fe_values,
-      const std::vector<double>                    &local_u,
-      FullMatrix<double>                           *cell_matrix,
-      Vector<double>                               *cell_residual,
-      const std::vector<types::global_dof_index>   &dof_indices)
+    std::unique_ptr<membrane::CellTerms::Scratch>
+    ChamberSubsystem::new_scratch() const
     {
-      pass->cell(
-        cell, local_u, cell_matrix, cell_residual, dof_indices, &fe_values);
+      return std::make_unique<ChamberAssembler::Pass::Scratch>(assembler);
+    }
+
+    std::unique_ptr<membrane::CellTerms::Record>
+    ChamberSubsystem::new_record() const
+    {
+      return std::make_unique<ChamberAssembler::Pass::Record>();
+    }
+
+    void
+    ChamberSubsystem::cell(const DoFHandler<2, 3>::active_cell_iterator &cell,
+                           const membrane::ReferenceGeometry &reference,
+                           const unsigned int                 cell_index,
+                           const std::vector<double>         &local_u,
+                           FullMatrix<double>                *cell_matrix,
+                           Vector<double>                    *cell_residual,
+                           membrane::CellTerms::Scratch      &scratch,
+                           membrane::CellTerms::Record       &record) const
+    {
+      pass->compute(cell,
+                    reference,
+                    cell_index,
+                    local_u,
+                    cell_matrix,
+                    cell_residual,
+                    static_cast<ChamberAssembler::Pass::Scratch &>(scratch),
+                    static_cast<ChamberAssembler::Pass::Record &>(record));
+    }
+
+    void
+    ChamberSubsystem::commit(
+      const membrane::CellTerms::Record          &record,
+      const std::vector<types::global_dof_index> &dof_indices)
+    {
+      pass->commit(static_cast<const ChamberAssembler::Pass::Record &>(record),
+                   dof_indices);
     }
 
     void

@@ -1,3 +1,5 @@
+#include <deal.II/base/multithread_info.h>
+
 #include <pneuma/core/threads.h>
 
 #include <dlfcn.h>
@@ -42,6 +44,9 @@ namespace pneuma
       dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
     if (!user_set && set_blas)
       set_blas(static_cast<int>(per_rank));
+    // deal.II's task threads (the cell loops of the assembly): as many;
+    // DEAL_II_NUM_THREADS lowers it.
+    dealii::MultithreadInfo::set_thread_limit(per_rank);
     return get_blas ? static_cast<unsigned int>(std::max(1, get_blas())) : 0;
   }
 } // namespace pneuma

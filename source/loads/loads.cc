@@ -281,10 +281,22 @@ namespace pneuma
       return error;
     }
 
+    void
+    Loads::set_time(const double t) const
+    {
+      for (auto *f : {pressure_function.get(),
+                      gravity_function.get(),
+                      surface_function.get(),
+                      line_function.get()})
+        if (f->get_time() != t)
+          f->set_time(t);
+    }
+
     double
     Loads::pressure(const Point<3> &x, const double t) const
     {
-      pressure_function->set_time(t);
+      if (pressure_function->get_time() != t)
+        pressure_function->set_time(t);
       return pressure_function->value(x);
     }
 
@@ -308,7 +320,8 @@ namespace pneuma
                    const Point<3>               &x,
                    const double                  t)
       {
-        f.set_time(t);
+        if (f.get_time() != t)
+          f.set_time(t);
         Vector<double> v(3);
         f.vector_value(x, v);
         Tensor<1, 3> r;

@@ -1,4 +1,6 @@
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/work_stream.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
@@ -13,6 +15,14 @@ namespace pneuma
 {
   namespace membrane
   {
+    namespace
+    {
+      /// Cells a thread takes at a time: a Q1 cell costs a few
+      /// microseconds, so smaller chunks would spend their time in the
+      /// pipeline's hand-over.
+      constexpr unsigned int cells_per_task = 32;
+    } // namespace
+
     MembraneAssembler::MembraneAssembler(
       const geometry::SceneGenerator &geometry,
       const MaterialRegions          &materials,
@@ -43,44 +53,125 @@ namespace pneuma
       return *reference;
     }
 
+    namespace
+    {
+      /// One thread's working memory of the cell loop.
+      struct CellScratch
+      {
+        CellScratch(const Mapping<2, 3>            &mapping,
+                    const FiniteElement<2, 3>      &fe,
+                    const Quadrature<1>            &face_quadrature,
+                    const unsigned int              n_node,
+                    const std::vector<CellTerms *> &terms)
+          : fe_face_values(mapping,
+                           fe,
+                           face_quadrature,
+                           update_values | update_quadrature_points
+                             | update_JxW_values)
+          , u_node(n_node)
+          , DP(n_node)
+          , DQ(n_node)
+          , tau(n_node)
+          , K_node(fe.n_dofs_per_cell() * fe.n_dofs_per_cell(), 0.)
+          , P_node(fe.n_dofs_per_cell() * fe.n_dofs_per_cell(), 0.)
+          , term_list(&terms)
+        {
+          for (const auto *t : terms)
+            this->terms.push_back(t->new_scratch());
+        }
+
+        CellScratch(const CellScratch &other)
+          : CellScratch(other.fe_face_values.get_mapping(),
+                        other.fe_face_values.get_fe(),
+                        other.fe_face_values.get_quadrature(),
+                        other.u_node.size(),
+                        *other.term_list)
+        {
+        }
+
+        FEFaceValues<2, 3>                               fe_face_values;
+        std::vector<std::array<double, 3>>               u_node, DP, DQ;
+        std::vector<std::array<double, 2>>               tau;
+        std::vector<double>                              K_node, P_node;
+        const std::vector<CellTerms *>                  *term_list;
+        std::vector<std::unique_ptr<CellTerms::Scratch>> terms;
+      };
+
+      /// What the cell loop hands from a thread to the sequential copier.
+      struct CellCopy
+      {
+        CellCopy(const unsigned int n_dofs, const std::vector<CellTerms *> &t)
+          : dof_indices(n_dofs)
+          , local_u(n_dofs)
+          , matrix(n_dofs, n_dofs)
+          , residual(n_dofs)
+          , external(n_dofs)
+          , term_list(&t)
+        {
+          for (const auto *term : t)
+            records.push_back(term->new_record());
+        }
+
+        CellCopy(const CellCopy &other)
+          : CellCopy(other.dof_indices.size(), *other.term_list)
+        {
+        }
+
+        /// (WorkStream sets its buffers from the sample: the sizes and
+        /// fresh records.)
+        CellCopy &
+        operator=(const CellCopy &other)
+        {
+          if (this != &other)
+            {
+              cell_index  = other.cell_index;
+              fast        = other.fast;
+              dof_indices = other.dof_indices;
+              local_u     = other.local_u;
+              matrix      = other.matrix;
+              residual    = other.residual;
+              external    = other.external;
+              term_list   = other.term_list;
+              records.clear();
+              for (const auto *term : *term_list)
+                records.push_back(term->new_record());
+            }
+          return *this;
+        }
+
+        unsigned int                                    cell_index = 0;
+        bool                                            fast       = false;
+        std::vector<types::global_dof_index>            dof_indices;
+        std::vector<double>                             local_u;
+        FullMatrix<double>                              matrix;
+        Vector<double>                                  residual, external;
+        const std::vector<CellTerms *>                 *term_list;
+        std::vector<std::unique_ptr<CellTerms::Record>> records;
+      };
+    } // namespace
+
     void
     MembraneAssembler::assemble(const LA::Vector                &u,
                                 const AffineConstraints<double> &constraints,
                                 const AssemblyRequest           &request) const
     {
       Assert(mapping != nullptr, ExcNotInitialized());
-      const auto        &fe = dof_handler->get_fe();
-      const QGauss<2>    quadrature(degree + 1);
-      const QGauss<1>    face_quadrature(degree + 1);
-      FEValues<2, 3>     fe_values(*mapping,
-                               fe,
-                               quadrature,
-                               update_values | update_gradients
-                                 | update_normal_vectors
-                                 | update_quadrature_points
-                                 | update_JxW_values);
-      FEFaceValues<2, 3> fe_face_values(*mapping,
-                                        fe,
-                                        face_quadrature,
-                                        update_values | update_quadrature_points
-                                          | update_JxW_values);
+      const auto     &fe = dof_handler->get_fe();
+      const QGauss<2> quadrature(degree + 1);
+      const QGauss<1> face_quadrature(degree + 1);
 
       const unsigned int n_dofs = fe.n_dofs_per_cell();
       const unsigned int n_q    = quadrature.size();
-      FullMatrix<double> cell_matrix(n_dofs, n_dofs);
-      Vector<double>     cell_residual(n_dofs), cell_external(n_dofs);
-      std::vector<types::global_dof_index> dof_indices(n_dofs);
-      std::vector<double>                  local_u(n_dofs);
 
       // Form finding: the form-finding laws, and no load.
       const bool loaded      = form_finding_laws.empty();
       const bool want_matrix = request.tangent != nullptr;
       const bool want_vector =
         request.residual != nullptr || request.external != nullptr;
-      const double       t = request.time;
+      const double t = request.time;
+      loads.set_time(t);
       const Tensor<1, 3> g =
         loaded && loads.has_gravity() ? loads.gravity(t) : Tensor<1, 3>();
-
 
       const ReferenceGeometry &ref    = reference_geometry();
       const unsigned int       n_node = ref.n_nodes();
@@ -103,243 +194,273 @@ namespace pneuma
       std::vector<std::array<unsigned int, 3>> dof_of(n_node);
       for (unsigned int i = 0; i < n_dofs; ++i)
         dof_of[ref.node(i)][ref.component(i)] = i;
-      std::vector<std::array<double, 3>> u_node(n_node), DP(n_node), DQ(n_node);
-      std::vector<std::array<double, 2>> tau(n_node);
-      // Node-ordered material + geometric (upper node blocks) and pressure
-      // parts of the cell matrix.
-      std::vector<double> K_node(n_dofs * n_dofs), P_node(n_dofs * n_dofs);
 
-      unsigned int k = 0;
+      // The locally owned cells in the order of the reference data.
+      std::vector<DoFHandler<2, 3>::active_cell_iterator> cells;
+      cells.reserve(ref.n_cells());
       for (const auto &cell : dof_handler->active_cell_iterators())
-        {
-          if (!cell->is_locally_owned())
-            continue;
-          const unsigned int             cell_index = k++;
-          const types::global_dof_index *cell_dofs =
-            ref.dof_indices(cell_index);
-          std::copy(cell_dofs, cell_dofs + n_dofs, dof_indices.begin());
-          for (unsigned int i = 0; i < n_dofs; ++i)
-            {
-              local_u[i]                            = u[dof_indices[i]];
-              u_node[ref.node(i)][ref.component(i)] = local_u[i];
-            }
-          cell_matrix   = 0;
-          cell_residual = 0;
-          cell_external = 0;
+        if (cell->is_locally_owned())
+          cells.push_back(cell);
+      const auto first   = cells.cbegin();
+      using CellIterator = decltype(first);
 
-          const RegionMaterial &material =
-            loaded ? materials[cell->material_id()]
-                   : form_finding_laws.at(cell->material_id());
-          const double H = material.thickness;
-          const bool   pressurised =
-            loaded && loads.pressure_acts_on(cell->material_id());
-          const bool surface_loaded =
-            loaded && loads.surface_load_acts_on(cell->material_id());
+      const auto worker = [&](const CellIterator &it,
+                              CellScratch        &scratch,
+                              CellCopy           &copy) {
+        const auto                    &cell       = *it;
+        const unsigned int             cell_index = it - first;
+        const types::global_dof_index *cell_dofs  = ref.dof_indices(cell_index);
+        auto                          &u_node     = scratch.u_node;
+        auto                          &DP         = scratch.DP;
+        auto                          &DQ         = scratch.DQ;
+        auto                          &tau        = scratch.tau;
+        auto                          &K_node     = scratch.K_node;
+        auto                          &P_node     = scratch.P_node;
+        auto                          &cell_matrix   = copy.matrix;
+        auto                          &cell_residual = copy.residual;
+        auto                          &cell_external = copy.external;
+        auto                          &local_u       = copy.local_u;
+        copy.cell_index                              = cell_index;
+        std::copy(cell_dofs, cell_dofs + n_dofs, copy.dof_indices.begin());
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          {
+            local_u[i]                            = u[copy.dof_indices[i]];
+            u_node[ref.node(i)][ref.component(i)] = local_u[i];
+          }
+        cell_matrix   = 0;
+        cell_residual = 0;
+        cell_external = 0;
 
-          for (unsigned int q = 0; q < n_q; ++q)
-            {
-              const auto   &P  = ref.point(cell_index, q);
-              const auto   *dN = ref.shape_derivatives(cell_index, q);
-              const double *N  = ref.shape_values(q);
-              // a_alpha = E_alpha + sum_a u_a dN_a/dS_alpha.
-              Tensor<1, 3> a0, a1;
+        const RegionMaterial &material =
+          loaded ? materials[cell->material_id()]
+                 : form_finding_laws.at(cell->material_id());
+        const double H = material.thickness;
+        const bool   pressurised =
+          loaded && loads.pressure_acts_on(cell->material_id());
+        const bool surface_loaded =
+          loaded && loads.surface_load_acts_on(cell->material_id());
+
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const auto   &P  = ref.point(cell_index, q);
+            const auto   *dN = ref.shape_derivatives(cell_index, q);
+            const double *N  = ref.shape_values(q);
+            // a_alpha = E_alpha + sum_a u_a dN_a/dS_alpha.
+            Tensor<1, 3> a0, a1;
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                a0[d] = P.E[0][d];
+                a1[d] = P.E[1][d];
+              }
+            for (unsigned int a = 0; a < n_node; ++a)
               for (unsigned int d = 0; d < 3; ++d)
                 {
-                  a0[d] = P.E[0][d];
-                  a1[d] = P.E[1][d];
+                  a0[d] += u_node[a][d] * dN[a][0];
+                  a1[d] += u_node[a][d] * dN[a][1];
                 }
+            SymmetricTensor<2, 2> C;
+            C[0][0] = a0 * a0;
+            C[0][1] = a0 * a1;
+            C[1][1] = a1 * a1;
+            SymmetricTensor<2, 2> S;
+            SymmetricTensor<4, 2> D;
+            material.law->evaluate(C, S, D);
+            const double dA  = P.JxW;
+            const double HdA = H * dA;
+
+            const Point<3>     X(P.X[0], P.X[1], P.X[2]);
+            const double       p           = !pressurised       ? 0.
+                                             : uniform_pressure ? pressure_value
+                                                                : loads.pressure(X, t);
+            const Tensor<1, 3> area_vector = cross_product_3d(a0, a1);
+            Tensor<1, 3>       dead_load   = material.density * H * g;
+            if (surface_loaded)
+              dead_load += loads.surface_load(X, t);
+
+            // tau_a = S grad_S N_a: the internal force of node a is
+            // H (tau_a0 a_0 + tau_a1 a_1) dA.
+            for (unsigned int a = 0; a < n_node; ++a)
+              {
+                tau[a][0] = S[0][0] * dN[a][0] + S[0][1] * dN[a][1];
+                tau[a][1] = S[0][1] * dN[a][0] + S[1][1] * dN[a][1];
+              }
+            if (want_vector)
               for (unsigned int a = 0; a < n_node; ++a)
-                for (unsigned int d = 0; d < 3; ++d)
+                for (unsigned int c = 0; c < 3; ++c)
                   {
-                    a0[d] += u_node[a][d] * dN[a][0];
-                    a1[d] += u_node[a][d] * dN[a][1];
+                    const unsigned int i = dof_of[a][c];
+                    const double       f_ext =
+                      (p * area_vector[c] + dead_load[c]) * N[a] * dA;
+                    cell_residual(i) +=
+                      HdA * (tau[a][0] * a0[c] + tau[a][1] * a1[c]) - f_ext;
+                    cell_external(i) += f_ext;
                   }
-              SymmetricTensor<2, 2> C;
-              C[0][0] = a0 * a0;
-              C[0][1] = a0 * a1;
-              C[1][1] = a1 * a1;
-              SymmetricTensor<2, 2> S;
-              SymmetricTensor<4, 2> D;
-              material.law->evaluate(C, S, D);
-              const double dA  = P.JxW;
-              const double HdA = H * dA;
+            if (!want_matrix)
+              continue;
 
-              const Point<3>     X(P.X[0], P.X[1], P.X[2]);
-              const double       p           = !pressurised       ? 0.
-                                               : uniform_pressure ? pressure_value
-                                                                  : loads.pressure(X, t);
-              const Tensor<1, 3> area_vector = cross_product_3d(a0, a1);
-              Tensor<1, 3>       dead_load   = material.density * H * g;
-              if (surface_loaded)
-                dead_load += loads.surface_load(X, t);
-
-              // tau_a = S grad_S N_a: the internal force of node a is
-              // H (tau_a0 a_0 + tau_a1 a_1) dA.
-              for (unsigned int a = 0; a < n_node; ++a)
+            // Material part in Voigt form: the strain of dof (a, c) is
+            // a0[c] P_a + a1[c] Q_a with P_a = (dN_a0, 0, dN_a1) and
+            // Q_a = (0, dN_a1, dN_a0) (components E11, E22, 2 E12).
+            const double Dv[3][3] = {
+              {D[0][0][0][0], D[0][0][1][1], D[0][0][0][1]},
+              {D[1][1][0][0], D[1][1][1][1], D[1][1][0][1]},
+              {D[0][1][0][0], D[0][1][1][1], D[0][1][0][1]}};
+            for (unsigned int b = 0; b < n_node; ++b)
+              for (unsigned int r = 0; r < 3; ++r)
                 {
-                  tau[a][0] = S[0][0] * dN[a][0] + S[0][1] * dN[a][1];
-                  tau[a][1] = S[0][1] * dN[a][0] + S[1][1] * dN[a][1];
+                  DP[b][r] = Dv[r][0] * dN[b][0] + Dv[r][2] * dN[b][1];
+                  DQ[b][r] = Dv[r][1] * dN[b][1] + Dv[r][2] * dN[b][0];
                 }
-              if (want_vector)
-                for (unsigned int a = 0; a < n_node; ++a)
+            // The material and geometric parts are symmetric: pairs
+            // b >= a, mirrored.
+            for (unsigned int a = 0; a < n_node; ++a)
+              for (unsigned int b = a; b < n_node; ++b)
+                {
+                  // P_a . D P_b etc.
+                  const double m00 = dN[a][0] * DP[b][0] + dN[a][1] * DP[b][2];
+                  const double m01 = dN[a][0] * DQ[b][0] + dN[a][1] * DQ[b][2];
+                  const double m10 = dN[a][1] * DP[b][1] + dN[a][0] * DP[b][2];
+                  const double m11 = dN[a][1] * DQ[b][1] + dN[a][0] * DQ[b][2];
+                  const double geometric =
+                    HdA * (dN[a][0] * tau[b][0] + dN[a][1] * tau[b][1]);
                   for (unsigned int c = 0; c < 3; ++c)
                     {
-                      const unsigned int i = dof_of[a][c];
-                      const double       f_ext =
-                        (p * area_vector[c] + dead_load[c]) * N[a] * dA;
-                      cell_residual(i) +=
-                        HdA * (tau[a][0] * a0[c] + tau[a][1] * a1[c]) - f_ext;
-                      cell_external(i) += f_ext;
+                      const double x0  = HdA * (a0[c] * m00 + a1[c] * m10);
+                      const double x1  = HdA * (a0[c] * m01 + a1[c] * m11);
+                      double      *row = &K_node[(3 * a + c) * n_dofs + 3 * b];
+                      for (unsigned int d = 0; d < 3; ++d)
+                        row[d] += x0 * a0[d] + x1 * a1[d];
+                      row[c] += geometric;
                     }
-              if (!want_matrix)
-                continue;
-
-              // Material part in Voigt form: the strain of dof (a, c) is
-              // a0[c] P_a + a1[c] Q_a with P_a = (dN_a0, 0, dN_a1) and
-              // Q_a = (0, dN_a1, dN_a0) (components E11, E22, 2 E12).
-              const double Dv[3][3] = {
-                {D[0][0][0][0], D[0][0][1][1], D[0][0][0][1]},
-                {D[1][1][0][0], D[1][1][1][1], D[1][1][0][1]},
-                {D[0][1][0][0], D[0][1][1][1], D[0][1][0][1]}};
+                }
+            if (p != 0.)
+              for (unsigned int a = 0; a < n_node; ++a)
+                {
+                  // Follower pressure: -p N_a eps_cdk w_k with
+                  // w = dN_b0 a_1 - dN_b1 a_0.
+                  const double s = p * N[a] * dA;
+                  for (unsigned int b = 0; b < n_node; ++b)
+                    {
+                      const Tensor<1, 3> w =
+                        s * (dN[b][0] * a1 - dN[b][1] * a0);
+                      double *r0 = &P_node[(3 * a) * n_dofs + 3 * b];
+                      double *r1 = r0 + n_dofs, *r2 = r1 + n_dofs;
+                      r0[1] -= w[2];
+                      r0[2] += w[1];
+                      r1[0] += w[2];
+                      r1[2] -= w[0];
+                      r2[0] -= w[1];
+                      r2[1] += w[0];
+                    }
+                }
+          }
+        if (want_matrix)
+          {
+            // Mirror the upper node blocks and add the pressure part, in
+            // the cell's dof order.
+            for (unsigned int a = 0; a < n_node; ++a)
               for (unsigned int b = 0; b < n_node; ++b)
-                for (unsigned int r = 0; r < 3; ++r)
-                  {
-                    DP[b][r] = Dv[r][0] * dN[b][0] + Dv[r][2] * dN[b][1];
-                    DQ[b][r] = Dv[r][1] * dN[b][1] + Dv[r][2] * dN[b][0];
-                  }
-              // The material and geometric parts are symmetric: pairs
-              // b >= a, mirrored.
-              for (unsigned int a = 0; a < n_node; ++a)
-                for (unsigned int b = a; b < n_node; ++b)
-                  {
-                    // P_a . D P_b etc.
-                    const double m00 =
-                      dN[a][0] * DP[b][0] + dN[a][1] * DP[b][2];
-                    const double m01 =
-                      dN[a][0] * DQ[b][0] + dN[a][1] * DQ[b][2];
-                    const double m10 =
-                      dN[a][1] * DP[b][1] + dN[a][0] * DP[b][2];
-                    const double m11 =
-                      dN[a][1] * DQ[b][1] + dN[a][0] * DQ[b][2];
-                    const double geometric =
-                      HdA * (dN[a][0] * tau[b][0] + dN[a][1] * tau[b][1]);
-                    for (unsigned int c = 0; c < 3; ++c)
-                      {
-                        const double x0 = HdA * (a0[c] * m00 + a1[c] * m10);
-                        const double x1 = HdA * (a0[c] * m01 + a1[c] * m11);
-                        double *row     = &K_node[(3 * a + c) * n_dofs + 3 * b];
-                        for (unsigned int d = 0; d < 3; ++d)
-                          row[d] += x0 * a0[d] + x1 * a1[d];
-                        row[c] += geometric;
-                      }
-                  }
-              if (p != 0.)
-                for (unsigned int a = 0; a < n_node; ++a)
-                  {
-                    // Follower pressure: -p N_a eps_cdk w_k with
-                    // w = dN_b0 a_1 - dN_b1 a_0.
-                    const double s = p * N[a] * dA;
-                    for (unsigned int b = 0; b < n_node; ++b)
-                      {
-                        const Tensor<1, 3> w =
-                          s * (dN[b][0] * a1 - dN[b][1] * a0);
-                        double *r0 = &P_node[(3 * a) * n_dofs + 3 * b];
-                        double *r1 = r0 + n_dofs, *r2 = r1 + n_dofs;
-                        r0[1] -= w[2];
-                        r0[2] += w[1];
-                        r1[0] += w[2];
-                        r1[2] -= w[0];
-                        r2[0] -= w[1];
-                        r2[1] += w[0];
-                      }
-                  }
-            }
-          if (want_matrix)
-            {
-              // Mirror the upper node blocks and add the pressure part, in
-              // the cell's dof order.
-              for (unsigned int a = 0; a < n_node; ++a)
-                for (unsigned int b = 0; b < n_node; ++b)
-                  for (unsigned int c = 0; c < 3; ++c)
-                    for (unsigned int d = 0; d < 3; ++d)
-                      {
-                        const double k =
-                          (b >= a ? K_node[(3 * a + c) * n_dofs + 3 * b + d]
-                                  : K_node[(3 * b + d) * n_dofs + 3 * a + c])
-                          + P_node[(3 * a + c) * n_dofs + 3 * b + d];
-                        cell_matrix(dof_of[a][c], dof_of[b][d]) = k;
-                      }
-              std::fill(K_node.begin(), K_node.end(), 0.);
-              std::fill(P_node.begin(), P_node.end(), 0.);
-            }
-
-          // Dead line loads on listed boundaries.
-          if (loaded && want_vector && !loads.line_load_boundaries().empty())
-            for (const auto f : cell->face_indices())
-              if (cell->face(f)->at_boundary()
-                  && loads.line_load_boundaries().count(
-                    cell->face(f)->boundary_id()))
-                {
-                  fe_face_values.reinit(cell, f);
-                  for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+                for (unsigned int c = 0; c < 3; ++c)
+                  for (unsigned int d = 0; d < 3; ++d)
                     {
-                      const Tensor<1, 3> load =
-                        loads.line_load(fe_face_values.quadrature_point(q), t);
-                      for (unsigned int i = 0; i < n_dofs; ++i)
-                        {
-                          const unsigned int c = ref.component(i);
-                          const double       f_ext =
-                            load[c]
-                            * fe_face_values.shape_value_component(i, q, c)
-                            * fe_face_values.JxW(q);
-                          cell_residual(i) -= f_ext;
-                          cell_external(i) += f_ext;
-                        }
+                      const double k =
+                        (b >= a ? K_node[(3 * a + c) * n_dofs + 3 * b + d]
+                                : K_node[(3 * b + d) * n_dofs + 3 * a + c])
+                        + P_node[(3 * a + c) * n_dofs + 3 * b + d];
+                      cell_matrix(dof_of[a][c], dof_of[b][d]) = k;
                     }
-                }
+            std::fill(K_node.begin(), K_node.end(), 0.);
+            std::fill(P_node.begin(), P_node.end(), 0.);
+          }
 
-          if (request.cell_terms)
-            {
-              fe_values.reinit(cell);
-              request.cell_terms(cell,
-                                 fe_values,
-                                 local_u,
-                                 want_matrix ? &cell_matrix : nullptr,
-                                 request.residual ? &cell_residual : nullptr,
-                                 dof_indices);
-            }
+        // Dead line loads on listed boundaries.
+        if (loaded && want_vector && !loads.line_load_boundaries().empty())
+          for (const auto f : cell->face_indices())
+            if (cell->face(f)->at_boundary()
+                && loads.line_load_boundaries().count(
+                  cell->face(f)->boundary_id()))
+              {
+                auto &fe_face_values = scratch.fe_face_values;
+                fe_face_values.reinit(cell, f);
+                for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+                  {
+                    const Tensor<1, 3> load =
+                      loads.line_load(fe_face_values.quadrature_point(q), t);
+                    for (unsigned int i = 0; i < n_dofs; ++i)
+                      {
+                        const unsigned int c = ref.component(i);
+                        const double       f_ext =
+                          load[c]
+                          * fe_face_values.shape_value_component(i, q, c)
+                          * fe_face_values.JxW(q);
+                        cell_residual(i) -= f_ext;
+                        cell_external(i) += f_ext;
+                      }
+                  }
+              }
 
-          // Cells without constraints and with owned rows add their matrix
-          // at the precomputed positions.
-          bool fast = direct && positions.direct(cell_index);
-          for (unsigned int i = 0; fast && i < n_dofs; ++i)
-            fast = !constraints.is_constrained(dof_indices[i]);
-          // A cell vector: by local index on the fast path, else through
-          // the constraints.
-          const auto add_vector = [&](const Vector<double> &cell_vector,
-                                      double               *local,
-                                      LA::Vector           *target) {
-            if (fast && local)
-              positions.add_vector(cell_index, cell_vector.data(), local);
-            else if (target)
-              constraints.distribute_local_to_global(cell_vector,
-                                                     dof_indices,
-                                                     *target);
-          };
-          if (fast)
-            {
-              positions.add(cell_index, &cell_matrix(0, 0));
-              add_vector(cell_residual, residual_values, request.residual);
-            }
-          else
-            LA::distribute(constraints,
-                           cell_matrix,
-                           cell_residual,
-                           dof_indices,
-                           want_matrix ? request.tangent : nullptr,
-                           request.residual);
-          add_vector(cell_external, external_values, request.external);
-        }
+        if (!request.cell_terms.empty())
+          {
+            for (unsigned int k = 0; k < request.cell_terms.size(); ++k)
+              request.cell_terms[k]->cell(cell,
+                                          ref,
+                                          cell_index,
+                                          local_u,
+                                          want_matrix ? &cell_matrix : nullptr,
+                                          request.residual ? &cell_residual
+                                                           : nullptr,
+                                          *scratch.terms[k],
+                                          *copy.records[k]);
+          }
+
+        // Cells without constraints and with owned rows add their matrix
+        // at the precomputed positions.
+        copy.fast = direct && positions.direct(cell_index);
+        for (unsigned int i = 0; copy.fast && i < n_dofs; ++i)
+          copy.fast = !constraints.is_constrained(copy.dof_indices[i]);
+      };
+
+      // One cell at a time, in cell order: the sums over cells are formed
+      // as on one thread.
+      const auto copier = [&](const CellCopy &copy) {
+        for (unsigned int k = 0; k < request.cell_terms.size(); ++k)
+          request.cell_terms[k]->commit(*copy.records[k], copy.dof_indices);
+        // A cell vector: by local index on the fast path, else through
+        // the constraints.
+        const auto add_vector = [&](const Vector<double> &cell_vector,
+                                    double               *local,
+                                    LA::Vector           *target) {
+          if (copy.fast && local)
+            positions.add_vector(copy.cell_index, cell_vector.data(), local);
+          else if (target)
+            constraints.distribute_local_to_global(cell_vector,
+                                                   copy.dof_indices,
+                                                   *target);
+        };
+        if (copy.fast)
+          {
+            positions.add(copy.cell_index, &copy.matrix(0, 0));
+            add_vector(copy.residual, residual_values, request.residual);
+          }
+        else
+          LA::distribute(constraints,
+                         copy.matrix,
+                         copy.residual,
+                         copy.dof_indices,
+                         want_matrix ? request.tangent : nullptr,
+                         request.residual);
+        add_vector(copy.external, external_values, request.external);
+      };
+
+      WorkStream::run(
+        cells.cbegin(),
+        cells.cend(),
+        worker,
+        copier,
+        CellScratch(*mapping, fe, face_quadrature, n_node, request.cell_terms),
+        CellCopy(n_dofs, request.cell_terms),
+        2 * MultithreadInfo::n_threads(),
+        cells_per_task);
 
       if (request.residual)
         request.residual->compress(VectorOperation::add);

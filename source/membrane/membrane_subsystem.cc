@@ -864,21 +864,7 @@ namespace pneuma
       request.external = a.external;
       for (auto *terms : cell_terms)
         terms->begin(a);
-      if (!cell_terms.empty())
-        request.cell_terms = [this](const auto &cell,
-                                    const auto &fe_values,
-                                    const auto &local_u,
-                                    auto       *cell_matrix,
-                                    auto       *cell_residual,
-                                    const auto &dof_indices) {
-          for (auto *terms : cell_terms)
-            terms->cell(cell,
-                        fe_values,
-                        local_u,
-                        cell_matrix,
-                        cell_residual,
-                        dof_indices);
-        };
+      request.cell_terms = cell_terms;
       assembler->assemble(*a.field, *a.constraints, request);
       for (auto *terms : cell_terms)
         terms->end();

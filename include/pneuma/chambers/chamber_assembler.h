@@ -38,7 +38,10 @@
 #include <pneuma/chambers/free_surface_quadrature.h>
 #include <pneuma/core/linear_algebra.h>
 #include <pneuma/geometry/scene_generator.h>
+#include <pneuma/membrane/cell_terms.h>
+#include <pneuma/membrane/reference_geometry.h>
 
+#include <functional>
 #include <map>
 #include <vector>
 
@@ -80,11 +83,14 @@ namespace pneuma
       ChamberAssembler(const geometry::SceneGenerator &geometry,
                        const ChamberParameters        &parameters);
 
-      /// Set the discretisation; walls are looked up by material id.
+      /// Set the discretisation; walls are looked up by material id and
+      /// integrated on the membrane kernel's reference data (@p reference
+      /// gives those of the current mesh).
       void
-      reinit(const Mapping<2, 3>    &mapping,
-             const DoFHandler<2, 3> &dof_handler,
-             const unsigned int      degree);
+      reinit(const Mapping<2, 3>                                 &mapping,
+             const DoFHandler<2, 3>                              &dof_handler,
+             const unsigned int                                   degree,
+             std::function<const membrane::ReferenceGeometry &()> reference);
 
       /**
        * Check every chamber before any work: its regions exist, and its
@@ -113,11 +119,39 @@ namespace pneuma
        * One pass over the cells, for callers that loop themselves (the
        * membrane assembler adds these terms to its cell matrices, so that
        * each cell is distributed once): construct, call cell() for every
-       * locally owned cell, then finish().
+       * locally owned cell, then finish(). A loop on several threads calls
+       * compute() (concurrently, one Scratch per thread) and then commit()
+       * for each cell in cell order instead of cell().
        */
       class Pass
       {
       public:
+        /// One thread's working memory.
+        struct Scratch : membrane::CellTerms::Scratch
+        {
+          explicit Scratch(const ChamberAssembler &assembler);
+          FreeSurfaceQuadrature     free_surface;
+          FEValues<2, 3>            support_values;
+          std::vector<Tensor<1, 3>> u_support;
+          std::vector<double>       psi;
+        };
+        /// One wall of one cell: its chamber, its part of the measures and
+        /// of dV/du (and dV_l/du).
+        struct Wall
+        {
+          unsigned int chamber = 0;
+          double volume = 0., area = 0., liquid_volume = 0., free_surface = 0.,
+                 wetted = 0.;
+          Vector<double> q, q_liquid;
+          bool           has_q_liquid = false;
+        };
+        /// What compute() leaves of one cell for commit().
+        struct Record : membrane::CellTerms::Record
+        {
+          unsigned int      n_walls = 0;
+          std::vector<Wall> walls;
+        };
+
         Pass(const ChamberAssembler          &assembler,
              const LA::Vector                &u,
              const AffineConstraints<double> &constraints,
@@ -125,16 +159,32 @@ namespace pneuma
              std::vector<ChamberMeasures>    &measures,
              const bool                       with_vectors);
         /// Add -f to @p cell_residual and -df/du to @p cell_matrix (either
-        /// may be nullptr) and accumulate the measures. @p reinit_values:
-        /// the caller's FEValues of this cell with the same quadrature, if
-        /// any (saves a reinit).
+        /// may be nullptr) and accumulate the measures: compute() and
+        /// commit() on this pass's own scratch.
         void
         cell(const DoFHandler<2, 3>::active_cell_iterator &cell,
+             const unsigned int                            cell_index,
              const std::vector<double>                    &local_u,
              FullMatrix<double>                           *cell_matrix,
              Vector<double>                               *cell_residual,
-             const std::vector<types::global_dof_index>   &dof_indices,
-             const FEValues<2, 3> *reinit_values = nullptr);
+             const std::vector<types::global_dof_index>   &dof_indices);
+        /// The terms of the cell with @p cell_index in @p reference into
+        /// @p cell_matrix and @p cell_residual and its measures into
+        /// @p record. May run on several threads at once.
+        void
+        compute(const DoFHandler<2, 3>::active_cell_iterator &cell,
+                const membrane::ReferenceGeometry            &reference,
+                const unsigned int                            cell_index,
+                const std::vector<double>                    &local_u,
+                FullMatrix<double>                           *cell_matrix,
+                Vector<double>                               *cell_residual,
+                Scratch                                      &scratch,
+                Record                                       &record) const;
+        /// Add the @p record of the cell with @p dof_indices to the
+        /// measures.
+        void
+        commit(const Record                               &record,
+               const std::vector<types::global_dof_index> &dof_indices);
         /// Sum the measures over the ranks, compress the vectors.
         void
         finish();
@@ -146,13 +196,8 @@ namespace pneuma
         const std::vector<ChamberLoad>  &loads;
         std::vector<ChamberMeasures>    &measures;
         const bool                       with_vectors;
-        QGauss<2>                        quadrature;
-        FEValues<2, 3>                   fe_values;
-        FreeSurfaceQuadrature            free_surface;
-        FEValues<2, 3>                   support_values;
-        std::vector<Tensor<1, 3>>        u_support;
-        std::vector<double>              psi;
-        Vector<double>                   cell_q, cell_ql;
+        Scratch                          own_scratch;
+        Record                           own_record;
       };
 
       /// Liquid volume below @p level in chamber @p c and its derivative
@@ -189,8 +234,9 @@ namespace pneuma
       const Mapping<2, 3>            *mapping     = nullptr;
       const DoFHandler<2, 3>         *dof_handler = nullptr;
       unsigned int                    degree      = 1;
-      Tensor<1, 3>                    unit_gravity;
-      double                          gravity_magnitude = 0.;
+      std::function<const membrane::ReferenceGeometry &()> reference;
+      Tensor<1, 3>                                         unit_gravity;
+      double gravity_magnitude = 0.;
       std::map<types::material_id, std::vector<std::pair<unsigned int, int>>>
         membership;
     };

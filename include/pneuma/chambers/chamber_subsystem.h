@@ -90,13 +90,22 @@ namespace pneuma
       // ---- membrane::CellTerms: the filling loads on the walls
       void
       begin(const Assembly &a) override;
+      std::unique_ptr<membrane::CellTerms::Scratch>
+      new_scratch() const override;
+      std::unique_ptr<membrane::CellTerms::Record>
+      new_record() const override;
       void
       cell(const DoFHandler<2, 3>::active_cell_iterator &cell,
-           const FEValues<2, 3>                         &fe_values,
+           const membrane::ReferenceGeometry            &reference,
+           const unsigned int                            cell_index,
            const std::vector<double>                    &local_u,
            FullMatrix<double>                           *cell_matrix,
            Vector<double>                               *cell_residual,
-           const std::vector<types::global_dof_index>   &dof_indices) override;
+           membrane::CellTerms::Scratch                 &scratch,
+           membrane::CellTerms::Record                  &record) const override;
+      void
+      commit(const membrane::CellTerms::Record          &record,
+             const std::vector<types::global_dof_index> &dof_indices) override;
       void
       end() override;
       void

@@ -66,6 +66,14 @@ namespace pneuma
       /// @p material_id ("Surface load regions").
       bool
       surface_load_acts_on(const types::material_id material_id) const;
+      /**
+       * Set the pseudo time @p t of the load functions before a cell loop
+       * that runs on several threads: pressure(), surface_load() and
+       * line_load() at this time then only read them (a time that differs
+       * is set on the spot, for calls outside such a loop).
+       */
+      void
+      set_time(const double t) const;
       /// Gravity vector [m/s^2] at pseudo time @p t.
       Tensor<1, 3>
       gravity(const double t) const;

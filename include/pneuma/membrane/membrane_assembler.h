@@ -26,10 +26,10 @@
 #include <pneuma/core/matrix_positions.h>
 #include <pneuma/geometry/scene_generator.h>
 #include <pneuma/loads/loads.h>
+#include <pneuma/membrane/cell_terms.h>
 #include <pneuma/membrane/constitutive_law.h>
 #include <pneuma/membrane/reference_geometry.h>
 
-#include <functional>
 #include <map>
 #include <memory>
 #include <vector>
@@ -52,19 +52,11 @@ namespace pneuma
       /// External load vector f_ext (owned), or nullptr.
       LA::Vector *external = nullptr;
       /**
-       * Further terms of the same cells (e.g. chamber loads), added to the
-       * cell matrix and residual before they are distributed once:
-       * (cell, its FEValues (Gauss degree + 1, reinit'ed; values,
-       * gradients, normals, points, JxW), local displacement, cell matrix
-       * or nullptr, cell residual or nullptr, dof indices).
+       * Further terms of the same cells (the chambers' wall loads), added
+       * to the cell matrix and residual before they are distributed once,
+       * in this order.
        */
-      std::function<void(const DoFHandler<2, 3>::active_cell_iterator &,
-                         const FEValues<2, 3> &,
-                         const std::vector<double> &,
-                         FullMatrix<double> *,
-                         Vector<double> *,
-                         const std::vector<types::global_dof_index> &)>
-        cell_terms;
+      std::vector<CellTerms *> cell_terms;
     };
 
     /// Assembles the membrane with its loads on a distributed mesh.
@@ -124,11 +116,12 @@ namespace pneuma
         form_finding_laws = std::move(laws);
       }
 
-    private:
-      /// The reference data of the current mesh (built at first use).
+      /// The reference data of the current mesh (built at first use; the
+      /// chambers integrate their wall terms on it).
       const ReferenceGeometry &
       reference_geometry() const;
 
+    private:
       const geometry::SceneGenerator              &geometry;
       const MaterialRegions                       &materials;
       const loads::Loads                          &loads;

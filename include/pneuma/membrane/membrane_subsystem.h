@@ -42,34 +42,6 @@ namespace pneuma
   {
     using namespace dealii;
 
-    /// Terms of another subsystem on the membrane's cells.
-    class CellTerms
-    {
-    public:
-      virtual ~CellTerms() = default;
-      /// Before the cell loop of a Newton assembly @p a.
-      virtual void
-      begin(const Assembly &a) = 0;
-      /// Add to the cell matrix and residual (either may be nullptr).
-      virtual void
-      cell(const DoFHandler<2, 3>::active_cell_iterator &cell,
-           const FEValues<2, 3>                         &fe_values,
-           const std::vector<double>                    &local_u,
-           FullMatrix<double>                           *cell_matrix,
-           Vector<double>                               *cell_residual,
-           const std::vector<types::global_dof_index>   &dof_indices) = 0;
-      /// After the cell loop.
-      virtual void
-      end() = 0;
-      /// For the reactions at the converged state @p u (ghosted): add the
-      /// loads to @p residual (as -f) and to @p external (as +f).
-      virtual void
-      add_loads(const LA::Vector                &u,
-                const AffineConstraints<double> &constraints,
-                LA::Vector                      &residual,
-                LA::Vector                      &external) const = 0;
-    };
-
     /// The membrane subsystem.
     class MembraneSubsystem : public Subsystem
     {
@@ -195,6 +167,13 @@ namespace pneuma
       degree() const
       {
         return fe_degree;
+      }
+      /// The reference data of the membrane kernel (per owned cell, in
+      /// cell order).
+      const ReferenceGeometry &
+      reference_geometry() const
+      {
+        return assembler->reference_geometry();
       }
       /// Number of monitor points (Output/Monitor points).
       unsigned int
