@@ -209,15 +209,26 @@ namespace pneuma
           std::vector<Vector<double>> B(m);
           for (unsigned int i = 0; i < m; ++i)
             B[i] = c.B[e.kept[i]];
+          // On Newton's factorization all m in one pass over the factors.
+          std::vector<LA::Vector>         Z;
+          std::vector<LA::Vector *>       z_ptr;
+          std::vector<const LA::Vector *> b_ptr;
+          if (reuse)
+            {
+              Z.reserve(m);
+              for (unsigned int j = 0; j < m; ++j)
+                {
+                  Z.emplace_back(c.B[e.kept[j]]);
+                  z_ptr.push_back(&Z.back());
+                  b_ptr.push_back(&c.B[e.kept[j]]);
+                }
+              model.linear_solver().solve(K, z_ptr, b_ptr);
+            }
           for (unsigned int j = 0; j < m; ++j)
             {
               Vector<double> z(B[j].size());
               if (reuse)
-                {
-                  LA::Vector z_j(c.B[e.kept[j]]);
-                  model.linear_solver().solve(K, z_j, c.B[e.kept[j]]);
-                  z = z_j;
-                }
+                z = Z[j];
               else
                 inertia.solve(B[j], z);
               for (unsigned int i = 0; i < m; ++i)
