@@ -173,7 +173,10 @@ main(int argc, char **argv)
         {"Cables/Cable 1/Start support", "fixed"},
         {"Load stepping/Initial increment", "0.25"},
         {"Newton/Residual tolerance", "1e-10"},
-        {"Newton/Maximum iterations", "100"}};
+        {"Newton/Maximum iterations", "100"},
+        // From the extrapolated start the last step is too short to show
+        // its rate: the tangent's rate is observed from the last state.
+        {"Load stepping/Extrapolation", "none"}};
       settings.insert(settings.end(), extra.begin(), extra.end());
       const auto  s     = pneuma_test::run(settings);
       const auto &r     = s.last_residual_history;

@@ -4,7 +4,9 @@
 # summary.json as the uninterrupted run (every number to 1e-10 relative,
 # the scale of a vector component being the vector's largest), on 1 and 2
 # ranks and across rank counts; the restarted run's solution.pvd lists every
-# step once, as the uninterrupted run's does.
+# step once, as the uninterrupted run's does. The checkpoint keeps the last
+# step's increment, so the restarted step starts from the same predictor
+# (the load-step extrapolation; the secant of an arc-length stage).
 # Usage: check_restart.sh PNEUMA_BINARY SOURCE_DIR [PYTHON]
 pneuma="$1" src="$2" python="${3:-/usr/bin/python3}"
 compare="$python $src/tests/compare_summaries.py"
@@ -33,7 +35,8 @@ for case in \
   "liquid_gas 1 1 3 $src/tests/chambers_liquid_gas_mpi.prm" \
   "liquid_gas 2 2 3 $src/tests/chambers_liquid_gas_mpi.prm" \
   "liquid_gas 2 1 5 $src/tests/chambers_liquid_gas_mpi.prm" \
-  "contact_patch 2 2 1 $src/tests/contact_patch_mpi.prm"; do
+  "contact_patch 2 2 1 $src/tests/contact_patch_mpi.prm" \
+  "sphere_arc_length 1 1 6 $src/parameter_files/sphere_arc_length.prm"; do
   set -- $case
   name="$1" first="$2" second="$3" stop="$4" prm="$5"
   full="$name-$first-full" part="$name-$first-$second-restart"

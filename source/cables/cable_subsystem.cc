@@ -165,14 +165,16 @@ namespace pneuma
     }
 
     void
-    CableSubsystem::save_checkpoint(Checkpoint &checkpoint,
-                                    const LA::Vector &) const
+    CableSubsystem::save_checkpoint(
+      Checkpoint &checkpoint,
+      const std::vector<const LA::Vector *> &) const
     {
       cables.save_checkpoint(checkpoint);
     }
 
     void
-    CableSubsystem::load_checkpoint(const Checkpoint &checkpoint, LA::Vector &)
+    CableSubsystem::load_checkpoint(const Checkpoint &checkpoint,
+                                    const std::vector<LA::Vector *> &)
     {
       cables.load_checkpoint(checkpoint);
     }

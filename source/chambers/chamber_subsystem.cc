@@ -201,15 +201,16 @@ namespace pneuma
     }
 
     void
-    ChamberSubsystem::save_checkpoint(Checkpoint &checkpoint,
-                                      const LA::Vector &) const
+    ChamberSubsystem::save_checkpoint(
+      Checkpoint &checkpoint,
+      const std::vector<const LA::Vector *> &) const
     {
       system.save_checkpoint(checkpoint);
     }
 
     void
     ChamberSubsystem::load_checkpoint(const Checkpoint &checkpoint,
-                                      LA::Vector &)
+                                      const std::vector<LA::Vector *> &)
     {
       system.load_checkpoint(checkpoint);
       restored = true;
@@ -227,6 +228,20 @@ namespace pneuma
     ChamberSubsystem::force_scale(const LA::Vector &) const
     {
       return system.force_scale();
+    }
+
+    double
+    ChamberSubsystem::start_prestress(const LA::Vector &) const
+    {
+      double virial = 0., area = 0.;
+      for (unsigned int c = 0; c < std::min(pass_loads.size(), measures.size());
+           ++c)
+        {
+          if (pass_loads[c].gas && pass_loads[c].gas_pressure > 0.)
+            virial += 3. * pass_loads[c].gas_pressure * measures[c].volume;
+          area += measures[c].wall_area;
+        }
+      return area > 0. && virial > 0. ? virial / (2. * area) : 0.;
     }
 
     void

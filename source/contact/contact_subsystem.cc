@@ -131,15 +131,16 @@ namespace pneuma
     }
 
     void
-    ContactSubsystem::save_checkpoint(Checkpoint &checkpoint,
-                                      const LA::Vector &) const
+    ContactSubsystem::save_checkpoint(
+      Checkpoint &checkpoint,
+      const std::vector<const LA::Vector *> &) const
     {
       contact->save_checkpoint(checkpoint);
     }
 
     void
     ContactSubsystem::load_checkpoint(const Checkpoint &checkpoint,
-                                      LA::Vector &)
+                                      const std::vector<LA::Vector *> &)
     {
       contact->load_checkpoint(checkpoint);
     }

@@ -300,43 +300,59 @@ namespace pneuma
   }
 
   void
-  Model::save_checkpoint(Checkpoint                    &checkpoint,
-                         const solvers::BorderedVector &state)
+  Model::save_checkpoint(
+    Checkpoint                                         &checkpoint,
+    const std::vector<const solvers::BorderedVector *> &states)
   {
-    ghost(state.field);
+    AssertThrow(!states.empty(), ExcInternalError());
+    // Ghosted copies of every state's field, the converged one first.
+    std::vector<LA::Vector>         fields(states.size());
+    std::vector<const LA::Vector *> pointers;
+    for (unsigned int j = 0; j < states.size(); ++j)
+      {
+        fields[j].reinit(ghosted);
+        fields[j] = states[j]->field;
+        pointers.push_back(&fields[j]);
+      }
     std::vector<std::string> names;
     for (const auto &s : subsystems)
       names.push_back(s->name());
     checkpoint.put("model/subsystems", names);
     checkpoint.put("model/dofs", static_cast<std::uint64_t>(n_dofs()));
-    checkpoint.put("model/border",
-                   std::vector<double>(state.border.begin(),
-                                       state.border.end()));
+    checkpoint.put("model/states", static_cast<unsigned int>(states.size()));
     // The counts at the last converged step: work of a step a signal cut
     // short is done again after the restart.
     checkpoint.put("model/counts", committed_counts);
-    for (unsigned int k = 0; k < subsystems.size(); ++k)
+    for (unsigned int j = 0; j < states.size(); ++j)
       {
-        if (!subsystems[k]->saves_own_field())
-          {
-            // The owned entries of the range, gathered in index order.
-            const UnknownRange                            r = ranges[k];
-            std::vector<std::pair<std::uint64_t, double>> local;
-            for (types::global_dof_index i = r.first; i < r.first + r.size; ++i)
-              if (owned.is_element(i))
-                local.emplace_back(i - r.first, state.field[i]);
-            const auto          all = Utilities::MPI::gather(comm, local, 0);
-            std::vector<double> values(r.size, 0.);
-            for (const auto &part : all)
-              for (const auto &[i, v] : part)
-                values[i] = v;
-            checkpoint.put("model/field/" + subsystems[k]->name(), values);
-          }
-        subsystems[k]->save_checkpoint(checkpoint, ghosted);
+        const std::string suffix = j == 0 ? "" : "/" + std::to_string(j);
+        checkpoint.put("model/border" + suffix,
+                       std::vector<double>(states[j]->border.begin(),
+                                           states[j]->border.end()));
+        for (unsigned int k = 0; k < subsystems.size(); ++k)
+          if (!subsystems[k]->saves_own_field())
+            {
+              // The owned entries of the range, gathered in index order.
+              const UnknownRange                            r = ranges[k];
+              std::vector<std::pair<std::uint64_t, double>> local;
+              for (types::global_dof_index i = r.first; i < r.first + r.size;
+                   ++i)
+                if (owned.is_element(i))
+                  local.emplace_back(i - r.first, states[j]->field[i]);
+              const auto          all = Utilities::MPI::gather(comm, local, 0);
+              std::vector<double> values(r.size, 0.);
+              for (const auto &part : all)
+                for (const auto &[i, v] : part)
+                  values[i] = v;
+              checkpoint.put("model/field/" + subsystems[k]->name() + suffix,
+                             values);
+            }
       }
+    for (const auto &s : subsystems)
+      s->save_checkpoint(checkpoint, pointers);
   }
 
-  solvers::BorderedVector
+  std::vector<solvers::BorderedVector>
   Model::load_checkpoint(const Checkpoint &checkpoint, const double t)
   {
     started = true;
@@ -358,27 +374,38 @@ namespace pneuma
                   + " unknowns in " + list(saved) + "; this input has "
                   + std::to_string(n_dofs()) + " in " + list(names) + ")");
     // The reference state first (reference volumes, initial contact),
-    // then the checkpoint's state over it.
-    solvers::BorderedVector state = initial_state();
-    const auto border = checkpoint.get<std::vector<double>>("model/border");
-    check_input(border.size() == n_border(),
-                "--restart " + checkpoint.directory(),
-                "the checkpoint has another number of chamber unknowns");
-    for (unsigned int k = 0; k < subsystems.size(); ++k)
-      if (!subsystems[k]->saves_own_field())
-        {
-          const auto values = checkpoint.get<std::vector<double>>(
-            "model/field/" + subsystems[k]->name());
-          const UnknownRange r = ranges[k];
-          for (types::global_dof_index i = r.first; i < r.first + r.size; ++i)
-            if (owned.is_element(i))
-              state.field[i] = values[i - r.first];
-        }
+    // then the checkpoint's states over it (the converged one first).
+    const solvers::BorderedVector        reference = initial_state();
+    std::vector<solvers::BorderedVector> states(
+      checkpoint.get<unsigned int>("model/states"), reference);
+    std::vector<LA::Vector *> fields;
+    for (unsigned int j = 0; j < states.size(); ++j)
+      {
+        const std::string suffix = j == 0 ? "" : "/" + std::to_string(j);
+        const auto        border =
+          checkpoint.get<std::vector<double>>("model/border" + suffix);
+        check_input(border.size() == n_border(),
+                    "--restart " + checkpoint.directory(),
+                    "the checkpoint has another number of chamber unknowns");
+        for (unsigned int i = 0; i < border.size(); ++i)
+          states[j].border[i] = border[i];
+        for (unsigned int k = 0; k < subsystems.size(); ++k)
+          if (!subsystems[k]->saves_own_field())
+            {
+              const auto values = checkpoint.get<std::vector<double>>(
+                "model/field/" + subsystems[k]->name() + suffix);
+              const UnknownRange r = ranges[k];
+              for (types::global_dof_index i = r.first; i < r.first + r.size;
+                   ++i)
+                if (owned.is_element(i))
+                  states[j].field[i] = values[i - r.first];
+            }
+        fields.push_back(&states[j].field);
+      }
     for (const auto &s : subsystems)
-      s->load_checkpoint(checkpoint, state.field);
-    state.field.compress(VectorOperation::insert);
-    for (unsigned int j = 0; j < border.size(); ++j)
-      state.border[j] = border[j];
+      s->load_checkpoint(checkpoint, fields);
+    for (auto &state : states)
+      state.field.compress(VectorOperation::insert);
     const auto counts =
       checkpoint.get<std::vector<unsigned int>>("model/counts");
     linear_solves = counts[0];
@@ -386,8 +413,8 @@ namespace pneuma
     committed_counts = counts;
     current_time     = t;
     // Reports of the restored state (chamber volumes, contact forces).
-    refresh(state);
-    return state;
+    refresh(states[0]);
+    return states;
   }
 
   std::string
@@ -792,13 +819,12 @@ namespace pneuma
   double
   Model::start_prestress()
   {
+    // The virials of the applied loads and of the chambers' pressures
+    // add up (each proposal is its virial over its own walls' area).
+    double force = 0.;
     for (const auto &s : subsystems)
-      {
-        const double force = s->start_prestress(external);
-        if (force > 0.)
-          return force;
-      }
-    return 0.;
+      force += std::max(0., s->start_prestress(external));
+    return force;
   }
 
   double

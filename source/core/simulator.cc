@@ -440,15 +440,16 @@ namespace pneuma
         form_found = form_finding.run(model, path.newton(), pcout);
       }
     // A restart continues the checkpoint's state and output files.
-    std::unique_ptr<std::pair<solvers::PathState, solvers::BorderedVector>>
-                 resume;
+    std::unique_ptr<solvers::PathResume> resume;
     unsigned int last_written = numbers::invalid_unsigned_int;
     if (restart)
       {
-        resume = std::make_unique<
-          std::pair<solvers::PathState, solvers::BorderedVector>>();
-        resume->first  = restart->get<solvers::PathState>("path");
-        resume->second = model.load_checkpoint(*restart, resume->first.time);
+        resume        = std::make_unique<solvers::PathResume>();
+        resume->path  = restart->get<solvers::PathState>("path");
+        auto states   = model.load_checkpoint(*restart, resume->path.time);
+        resume->state = std::move(states[0]);
+        if (states.size() > 1)
+          resume->increment = std::move(states[1]);
         wall_offset    = restart->get<double>("run/wall_seconds");
         const auto s   = restart->get<std::vector<double>>("run/stability");
         unstable_steps = static_cast<unsigned int>(s[0]);
@@ -457,11 +458,11 @@ namespace pneuma
         last_stability.negative = static_cast<long long>(s[3]);
         last_written = restart->get<unsigned int>("output/last_written");
         output.prepare_restart(comm,
-                               resume->first.steps,
+                               resume->path.steps,
                                restart->get<std::string>("output/history"));
         pcout << "pneuma: restarting from " << restart->directory()
-              << " after step " << resume->first.steps
-              << ", t = " << resume->first.time << std::endl;
+              << " after step " << resume->path.steps
+              << ", t = " << resume->path.time << std::endl;
       }
     else
       output.prepare(comm);
@@ -502,7 +503,11 @@ namespace pneuma
     const auto save_checkpoint = [&](const solvers::BorderedVector &state) {
       TimerOutput::Scope ts(timer, "checkpoint");
       write_checkpoint(checkpoint_directory(), comm, [&](Checkpoint &cp) {
-        model.save_checkpoint(cp, state);
+        // The state and the last step's increment (the predictors').
+        std::vector<const solvers::BorderedVector *> states{&state};
+        if (path.last_increment().field.size() > 0)
+          states.push_back(&path.last_increment());
+        model.save_checkpoint(cp, states);
         cp.put("path", path.state());
         cp.put("output/history", output.history_so_far());
         cp.put("output/last_written", last_written);

@@ -186,32 +186,46 @@ namespace pneuma
     }
 
     void
-    MembraneSubsystem::save_checkpoint(Checkpoint       &checkpoint,
-                                       const LA::Vector &field) const
+    MembraneSubsystem::save_checkpoint(
+      Checkpoint                            &checkpoint,
+      const std::vector<const LA::Vector *> &fields) const
     {
-      // The displacements travel with the mesh (p4est), so a restart may
-      // use another number of ranks.
-      LA::Vector owned(owned_dofs, comm);
-      for (const auto i : owned_dofs)
-        owned[i] = field[i];
-      owned.compress(VectorOperation::insert);
-      LA::Vector ghosted(owned_dofs, relevant_dofs, comm);
-      ghosted = owned;
+      // The displacements (and the path's other vectors) travel with the
+      // mesh (p4est), so a restart may use another number of ranks.
+      std::vector<LA::Vector>         ghosted(fields.size());
+      std::vector<const LA::Vector *> pointers;
+      for (unsigned int k = 0; k < fields.size(); ++k)
+        {
+          LA::Vector owned(owned_dofs, comm);
+          for (const auto i : owned_dofs)
+            owned[i] = (*fields[k])[i];
+          owned.compress(VectorOperation::insert);
+          ghosted[k].reinit(owned_dofs, relevant_dofs, comm);
+          ghosted[k] = owned;
+          pointers.push_back(&ghosted[k]);
+        }
       parallel::distributed::SolutionTransfer<2, LA::Vector, 3> transfer(dofs);
-      transfer.prepare_for_serialization(ghosted);
+      transfer.prepare_for_serialization(pointers);
       mesh.save(checkpoint.directory() + "/membrane.mesh");
       checkpoint.put("membrane/pvd", pvd_records);
     }
 
     void
     MembraneSubsystem::load_checkpoint(const Checkpoint &checkpoint,
-                                       LA::Vector       &field)
+                                       const std::vector<LA::Vector *> &fields)
     {
-      LA::Vector owned(owned_dofs, comm);
+      std::vector<LA::Vector>   owned(fields.size());
+      std::vector<LA::Vector *> pointers;
+      for (auto &v : owned)
+        {
+          v.reinit(owned_dofs, comm);
+          pointers.push_back(&v);
+        }
       parallel::distributed::SolutionTransfer<2, LA::Vector, 3> transfer(dofs);
-      transfer.deserialize(owned);
-      for (const auto i : owned_dofs)
-        field[i] = owned[i];
+      transfer.deserialize(pointers);
+      for (unsigned int k = 0; k < fields.size(); ++k)
+        for (const auto i : owned_dofs)
+          (*fields[k])[i] = owned[k][i];
       pvd_records = checkpoint.get<std::vector<std::pair<double, std::string>>>(
         "membrane/pvd");
     }

@@ -67,6 +67,17 @@ namespace pneuma
         "first step converges to a stable state is the same under "
         "automatic and full.",
         Patterns::Selection("automatic|ramped|full"));
+      prm.add_parameter(
+        "Extrapolation",
+        extrapolation_name,
+        "Start of a load-controlled step: linear (default) extrapolates "
+        "the last step's increment of the state, scaled to this step "
+        "(Abaqus' EXTRAPOLATION=LINEAR), where that step was "
+        "load-controlled, of the same stage and not from the unstressed "
+        "state, and this one is not taken again after a cut back; none "
+        "starts from the last converged state. Changes the iterations, "
+        "not the equilibrium.",
+        Patterns::Selection("linear|none"));
       prm.enter_subsection("Path following");
       prm.add_parameter("Constraint",
                         constraint_name,
@@ -110,6 +121,7 @@ namespace pneuma
     {
       stepping.parse_parameters(prm);
       newton_solver.parse_parameters(prm);
+      extrapolate         = extrapolation_name == "linear";
       const std::string p = "Load stepping/";
       check_input(control_names.size() == 1
                     || control_names.size() == stepping.n_stages(),
@@ -377,11 +389,11 @@ namespace pneuma
     }
 
     PathResult
-    StaticLoadPath::run(Model                                      &model,
-                        const ConditionalOStream                   &out,
-                        dealii::Timer                              &wall_clock,
-                        const Observer                             &observer,
-                        const std::pair<PathState, BorderedVector> *resume)
+    StaticLoadPath::run(Model                    &model,
+                        const ConditionalOStream &out,
+                        dealii::Timer            &wall_clock,
+                        const Observer           &observer,
+                        const PathResume         *resume)
     {
       PathResult result;
       double     t  = 0.;
@@ -391,8 +403,9 @@ namespace pneuma
       unsigned int stiffness_stage = numbers::invalid_unsigned_int;
       if (resume)
         {
-          const PathState &p           = resume->first;
-          result.state                 = resume->second;
+          const PathState &p           = resume->path;
+          result.state                 = resume->state;
+          step_increment               = resume->increment;
           t                            = p.time;
           dt                           = p.increment;
           result.steps                 = p.steps;
@@ -418,6 +431,7 @@ namespace pneuma
           model.ramp_initial_loads(0., 0.);
           result.state       = model.initial_state();
           current            = PathState();
+          step_increment     = BorderedVector();
           previous_stability = StabilityReport();
           current.increment  = dt;
           // Load stepping/Initial prestress = ramped: over the first step.
@@ -465,8 +479,14 @@ namespace pneuma
         model.reject_step(t);
         return tangent;
       };
-      const double   psi2 = constraint_name == "spherical" ? 1. : 0.;
+      const double psi2 = constraint_name == "spherical" ? 1. : 0.;
+      // The secant predictor of a path-controlled stage (a restart keeps
+      // it).
       BorderedVector previous_increment;
+      if (current.secant && step_increment.field.size() > 0)
+        previous_increment =
+          PathConstraintProblem::extend(step_increment, current.increment_dt);
+
       enum class Forced
       {
         none,
@@ -556,6 +576,7 @@ namespace pneuma
               current.last_dtau          = 0.;
               current.limit_since_return = false;
               previous_increment         = BorderedVector();
+              current.secant             = false;
               forced                     = Forced::none;
               dt                         = stepping.initial();
               out << "Stage " << stage + 1 << " under "
@@ -569,7 +590,8 @@ namespace pneuma
           double         t_new = 0.;
           NewtonResult   newton;
           BorderedVector x_last, x, predictor;
-          double         size = 0.;
+          bool           extrapolated = false;
+          double         size         = 0.;
           if (!path_step)
             {
               // 1. Prepare the load step from the last converged state.
@@ -578,6 +600,23 @@ namespace pneuma
                         : stepping.next_time(t_old, dt);
               out << "Step " << result.steps + 1 << "  t = " << t_new
                   << "  dt = " << t_new - t_old << std::endl;
+              // The predictor: the last step's increment scaled to this
+              // one (before the step sets its prescribed values), within
+              // a load-controlled stage (the loads' rates change at stage
+              // ends: sealing, a new load). Its tolerance keeps the scale
+              // of the last step's residual per unit pseudo time.
+              double reference = 0.;
+              if (extrapolate && !current.cut_back && current.increment_dt != 0.
+                  && current.increment_load && current.increment_stage == stage
+                  && step_increment.field.size() == result.state.field.size()
+                  && step_increment.border.size() == result.state.border.size())
+                {
+                  const double factor = (t_new - t_old) / current.increment_dt;
+                  result.state.field.add(factor, step_increment.field);
+                  result.state.border.add(factor, step_increment.border);
+                  reference = current.reference_rate * std::abs(t_new - t_old);
+                  extrapolated = true;
+                }
               const std::string impossible =
                 model.begin_step(t_new, result.state);
               if (!impossible.empty())
@@ -594,7 +633,8 @@ namespace pneuma
               newton = newton_solver.solve(model,
                                            result.state,
                                            out,
-                                           last.field.linfty_norm() == 0.);
+                                           last.field.linfty_norm() == 0.,
+                                           reference);
             }
           else
             {
@@ -742,6 +782,24 @@ namespace pneuma
               if (stability.from_newton && previous_stability.computed
                   && stability.negative != previous_stability.negative)
                 stability = stability_judge(result.state, true);
+              // A change of the count after an extrapolated start may be
+              // the extrapolation's: past a critical point it can reach
+              // another equilibrium (a crumpled balloon, thousands of
+              // negative eigenvalues). The step is taken again from the
+              // converged state.
+              if (extrapolated && stability.computed
+                  && previous_stability.computed
+                  && stability.negative != previous_stability.negative)
+                {
+                  out << "  (the stability count changed after the "
+                         "extrapolated start: the step is taken again "
+                         "from the last converged state)"
+                      << std::endl;
+                  result.state     = last;
+                  current.cut_back = true;
+                  model.reject_step(t_old);
+                  continue;
+                }
               if (locate_tolerance > 0. && stability.computed
                   && stability.energy_form && previous_stability.computed
                   && previous_stability.energy_form
@@ -844,7 +902,8 @@ namespace pneuma
           if (!newton.converged)
             {
               ++result.cutbacks;
-              result.state = last;
+              current.cut_back = true;
+              result.state     = last;
               model.reject_step(t_old);
               const double tried =
                 control != Control::load ? dt : t_new - t_old;
@@ -889,6 +948,20 @@ namespace pneuma
           // 4. Accept.
           if (stability.computed && stability.energy_form)
             previous_stability = stability;
+          current.cut_back = false;
+          // The increment the next step's predictor extrapolates: after a
+          // load-controlled step, not across a branch switch, nor from the
+          // unstressed state (a membrane's first response, w ~ p^(1/3),
+          // extrapolated linearly overshoots).
+          step_increment = result.state;
+          step_increment.field -= last.field;
+          step_increment.border -= last.border;
+          current.increment_dt = t_new - t_old;
+          current.reference_rate =
+            newton.reference / std::max(std::abs(t_new - t_old), 1e-300);
+          current.increment_stage = stage;
+          current.increment_load =
+            !path_step && !switched && last.field.linfty_norm() > 0.;
           t = t_new;
           ++result.steps;
           model.current_time = t_new;
@@ -949,6 +1022,7 @@ namespace pneuma
                 previous_increment = BorderedVector();
               else if (reached == Forced::none)
                 previous_increment = step;
+              current.secant = previous_increment.field.size() > 0;
             }
           out << "  converged in " << newton.iterations << " iterations ("
               << newton.convergence_test << "), wall " << std::fixed
@@ -974,6 +1048,7 @@ namespace pneuma
                 {
                   current.path_active = false;
                   previous_increment  = BorderedVector();
+                  current.secant      = false;
                   dt                  = stepping.initial();
                 }
               else if (reached == Forced::to_target)

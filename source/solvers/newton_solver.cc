@@ -2,6 +2,7 @@
 
 #include <pneuma/solvers/newton_solver.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -250,9 +251,10 @@ namespace pneuma
       // predicted-update test.
       double last_full_update = 0.;
 
-      // The caller's assembly at u serves the first iteration (unshifted).
+      // The caller's assembly at u serves the first iteration (at the
+      // anchor of a shifted phase the shift term vanishes).
       double r_norm = 0.;
-      if (assembled && phase.shift == 0.)
+      if (assembled)
         {
           residual = *assembled;
           r_norm   = residual.l2_norm();
@@ -435,12 +437,12 @@ namespace pneuma
     bool
     NewtonSolver::continuation(NonlinearProblem         &problem,
                                BorderedVector           &u,
+                               BorderedVector           &r,
                                const double              r_ref,
                                const ConditionalOStream &out,
                                NewtonResult             &result) const
     {
       using S = ContinuationSchedule;
-      BorderedVector r(u);
       problem.assemble(u, r); // the scale is taken from K at the start
       const double initial = problem.initial_shift(shift_factor);
       Phase        phase;
@@ -448,12 +450,17 @@ namespace pneuma
       phase.max_iterations  = S::inner_iterations;
       phase.tolerance       = S::inner_tolerance;
       unsigned int failures = 0;
+      // r and the tangent last assembled are those at u: a phase starting
+      // there need not assemble again.
+      bool fresh = true;
       while (result.iterations < S::budget * max_iter && !problem.interrupted())
         {
           phase.anchor = u;
-          if (!iterate(problem, u, phase, r_ref, out, result))
+          if (!iterate(
+                problem, u, phase, r_ref, out, result, fresh ? &r : nullptr))
             {
-              u = phase.anchor;
+              u     = phase.anchor; // r is still its residual, the tangent not
+              fresh = false;
               phase.shift *= S::grow;
               // A failure that costs no iteration (the linear solver) must
               // not loop for ever.
@@ -462,6 +469,7 @@ namespace pneuma
               continue;
             }
           problem.assemble(u, r);
+          fresh = true;
           if (r.l2_norm() <= S::switch_ratio * r_ref
               || phase.shift < S::min_shift * initial)
             break;
@@ -470,7 +478,7 @@ namespace pneuma
       result.residual_history.assign(1, r.l2_norm());
       result.failure_reason.clear();
       result.convergence_test.clear();
-      return true;
+      return fresh;
     }
 
     void
@@ -525,13 +533,15 @@ namespace pneuma
     NewtonSolver::solve(NonlinearProblem         &problem,
                         BorderedVector           &u,
                         const ConditionalOStream &out,
-                        const bool                allow_continuation) const
+                        const bool                allow_continuation,
+                        const double              reference) const
     {
       NewtonResult   result;
       BorderedVector r(u);
       problem.assemble(u, r);
       const double r0    = r.l2_norm();
-      const double r_ref = std::max(r0, problem.load_norm());
+      const double r_ref = std::max({r0, problem.load_norm(), reference});
+      result.reference   = r_ref;
       result.residual_history.push_back(r0);
       if (r_ref == 0.)
         {
@@ -564,8 +574,9 @@ namespace pneuma
             << ": continuing with the regularised iteration)\n";
       u = u_start;
       result.residual_history.assign(1, r0);
-      continuation(problem, u, r_ref, out, result);
-      result.converged = iterate(problem, u, newton, r_ref, out, result);
+      const bool fresh = continuation(problem, u, r, r_ref, out, result);
+      result.converged =
+        iterate(problem, u, newton, r_ref, out, result, fresh ? &r : nullptr);
       return result;
     }
   } // namespace solvers

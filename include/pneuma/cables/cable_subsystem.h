@@ -90,10 +90,12 @@ namespace pneuma
                   const LA::Vector     &field,
                   const Vector<double> &border) override;
       void
-      save_checkpoint(Checkpoint       &checkpoint,
-                      const LA::Vector &field) const override;
+      save_checkpoint(
+        Checkpoint                            &checkpoint,
+        const std::vector<const LA::Vector *> &fields) const override;
       void
-      load_checkpoint(const Checkpoint &checkpoint, LA::Vector &field) override;
+      load_checkpoint(const Checkpoint                &checkpoint,
+                      const std::vector<LA::Vector *> &fields) override;
       double
       force_scale(const LA::Vector &field) const override;
       /// With contact: the end reactions need every subsystem's forces.

@@ -72,15 +72,24 @@ namespace pneuma
                   const LA::Vector     &field,
                   const Vector<double> &border) override;
       void
-      save_checkpoint(Checkpoint       &checkpoint,
-                      const LA::Vector &field) const override;
+      save_checkpoint(
+        Checkpoint                            &checkpoint,
+        const std::vector<const LA::Vector *> &fields) const override;
       void
-      load_checkpoint(const Checkpoint &checkpoint, LA::Vector &field) override;
+      load_checkpoint(const Checkpoint                &checkpoint,
+                      const std::vector<LA::Vector *> &fields) override;
       /// The reports of a state restored from a checkpoint.
       void
       refresh(const LA::Vector &field) override;
       double
       force_scale(const LA::Vector &field) const override;
+      /// The virial of the gas pressures at the state last assembled,
+      /// 3 p V per chamber (divergence theorem), over twice the walls'
+      /// area: pR/2 for a sphere, 3pR/4 for a tube between plates (the
+      /// mean of its hoop and axial forces). The liquid's share is left
+      /// out.
+      double
+      start_prestress(const LA::Vector &external) const override;
       void
       add_statistics(Statistics       &statistics,
                      const LA::Vector &field) const override;

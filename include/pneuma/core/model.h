@@ -193,16 +193,17 @@ namespace pneuma
     /// subsystem initialized.
     solvers::BorderedVector
     initial_state();
-    /// Checkpoint: every subsystem's state at the converged @p state, the
-    /// field values of those that do not save their own, the border and
-    /// the solver counts.
+    /// Checkpoint: every subsystem's state at the converged state
+    /// `*states[0]`, the field values of those that do not save their own
+    /// and the border of each of @p states (then the other vectors the
+    /// load path keeps: the last step's increment), and the solver counts.
     void
-    save_checkpoint(Checkpoint                    &checkpoint,
-                    const solvers::BorderedVector &state);
-    /// Restart: the reference state (initial_state()), then the state of
-    /// @p checkpoint at pseudo time @p t; throws InputError if the
-    /// checkpoint belongs to another scene.
-    solvers::BorderedVector
+    save_checkpoint(Checkpoint &checkpoint,
+                    const std::vector<const solvers::BorderedVector *> &states);
+    /// Restart: the reference state (initial_state()), then the states of
+    /// @p checkpoint at pseudo time @p t, the converged one first; throws
+    /// InputError if the checkpoint belongs to another scene.
+    std::vector<solvers::BorderedVector>
     load_checkpoint(const Checkpoint &checkpoint, const double t);
     /// Set up from the checkpoint in @p directory (its mesh) instead of
     /// the input's mesh; empty: a fresh run.

@@ -221,9 +221,10 @@ namespace pneuma
     /**
      * Newton's stiffened start (solvers/newton_solver.h): an isotropic
      * membrane force (N/m) estimated from the applied loads @p external
-     * (owned), whose geometric stiffness makes the first solve from an
-     * unstressed state well posed and free of the linear solution's kinks;
-     * 0: no proposal (the first proposal in subsystem order is taken).
+     * (owned) or from this subsystem's own loads at the state last
+     * assembled (a chamber's pressure), whose geometric stiffness makes
+     * the first solve from an unstressed state well posed and free of the
+     * linear solution's kinks; 0: no proposal (the proposals add up).
      */
     virtual double
     start_prestress(const LA::Vector &external) const
@@ -389,25 +390,31 @@ namespace pneuma
     {
       return false;
     }
-    /// Store what a restart needs besides the field and the border (all
-    /// ranks call it; sections put on rank 0 are the ones written) at the
-    /// converged @p field (ghosted).
+    /**
+     * Store what a restart needs besides the field and the border (all
+     * ranks call it; sections put on rank 0 are the ones written).
+     * @p fields (ghosted): the converged field first, then the other
+     * whole-model vectors the load path keeps (the last step's increment,
+     * its predictor); a subsystem that saves its own field saves all.
+     */
     virtual void
-    save_checkpoint(Checkpoint &checkpoint, const LA::Vector &field) const
+    save_checkpoint(Checkpoint                            &checkpoint,
+                    const std::vector<const LA::Vector *> &fields) const
     {
       (void)checkpoint;
-      (void)field;
+      (void)fields;
     }
     /**
      * Restore that state (the model is set up and initialized at t = 0);
      * a subsystem that saves its own field writes its owned entries of
-     * @p field here.
+     * each of @p fields (as many as were saved) here.
      */
     virtual void
-    load_checkpoint(const Checkpoint &checkpoint, LA::Vector &field)
+    load_checkpoint(const Checkpoint                &checkpoint,
+                    const std::vector<LA::Vector *> &fields)
     {
       (void)checkpoint;
-      (void)field;
+      (void)fields;
     }
     // ---- reporting
     /// True if add_statistics() reads Model::support_residual() (it costs

@@ -276,10 +276,12 @@ namespace pneuma
         return true;
       }
       void
-      save_checkpoint(Checkpoint       &checkpoint,
-                      const LA::Vector &field) const override;
+      save_checkpoint(
+        Checkpoint                            &checkpoint,
+        const std::vector<const LA::Vector *> &fields) const override;
       void
-      load_checkpoint(const Checkpoint &checkpoint, LA::Vector &field) override;
+      load_checkpoint(const Checkpoint                &checkpoint,
+                      const std::vector<LA::Vector *> &fields) override;
       void
       compute_reactions(const LA::Vector      &u,
                         std::array<double, 3> &reaction,

@@ -121,6 +121,19 @@ namespace pneuma
       /// The automatic first step: the loads acting in full at t = 0 grow
       /// over [ramp_start, ramp_end] (none while ramp_end <= ramp_start).
       double ramp_start = 0., ramp_end = 0.;
+      /// The last accepted step (StaticLoadPath::last_increment()): its
+      /// change of pseudo time (0: none kept), its stage, whether the next
+      /// load-controlled step may extrapolate it (a load-controlled step
+      /// from a stressed state, not a branch switch), and whether it is the
+      /// path's secant predictor;
+      /// whether the step was cut back since (then taken again without
+      /// extrapolation).
+      double increment_dt = 0.;
+      /// |r_ref| of its Newton solve per unit of pseudo time (the
+      /// reference of a predicted step, NewtonSolver::solve()).
+      double       reference_rate  = 0.;
+      unsigned int increment_stage = 0;
+      bool         increment_load = false, secant = false, cut_back = false;
 
       template <class Archive>
       void
@@ -133,7 +146,18 @@ namespace pneuma
         ar &path_active &path_stage &u_scale &force_scale &monitor_rate;
         ar &arc_length &last_dtau &path_steps             &limit_since_return;
         ar &ramp_start                                    &ramp_end;
+        ar &increment_dt &reference_rate &increment_stage &increment_load;
+        ar &secant                                        &cut_back;
       }
+    };
+
+    /// What a restart continues from (core/checkpoint.h).
+    struct PathResume
+    {
+      PathState      path;
+      BorderedVector state;
+      /// The last accepted step's increment (PathState::increment_dt).
+      BorderedVector increment;
     };
 
     /// How the path ended.
@@ -175,11 +199,11 @@ namespace pneuma
        * observer first sees the next step).
        */
       PathResult
-      run(Model                                      &model,
-          const ConditionalOStream                   &out,
-          dealii::Timer                              &wall_clock,
-          const Observer                             &observer,
-          const std::pair<PathState, BorderedVector> *resume = nullptr);
+      run(Model                    &model,
+          const ConditionalOStream &out,
+          dealii::Timer            &wall_clock,
+          const Observer           &observer,
+          const PathResume         *resume = nullptr);
 
       /// The path's state at the last converged step (valid inside the
       /// observer and after run()).
@@ -187,6 +211,15 @@ namespace pneuma
       state() const
       {
         return current;
+      }
+
+      /// The last accepted step's increment of the state (empty if none
+      /// is kept), which the predictors extrapolate; with state() what a
+      /// checkpoint stores.
+      const BorderedVector &
+      last_increment() const
+      {
+        return step_increment;
       }
 
       /// Stop after converged step @p step (0: never), with exit code 0.
@@ -261,6 +294,11 @@ namespace pneuma
       bool         has_target       = false;
       unsigned int max_path_steps   = 200;
       bool         stop_at_critical = false;
+      /// "Load stepping/Extrapolation": linear or none.
+      std::string extrapolation_name = "linear";
+      bool        extrapolate        = true;
+      /// See last_increment().
+      BorderedVector step_increment;
 
       Control
       control_of(const unsigned int stage) const

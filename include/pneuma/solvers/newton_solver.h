@@ -132,6 +132,8 @@ namespace pneuma
       std::string         failure_reason;
       /// The test that declared convergence (empty if none did).
       std::string convergence_test;
+      /// |r_ref|, the scale of the residual tolerance.
+      double reference = 0.;
     };
 
     /// "Newton" subsection and the iteration.
@@ -151,12 +153,17 @@ namespace pneuma
        * starts from the unstressed state); elsewhere a failed Newton step
        * is left to the load-step cut-back, so that no spurious branch (an
        * everted sphere past a limit point) is picked up.
+       * @p reference: a lower bound of |r_ref| (a step that starts from a
+       * predicted state measures its tolerance against the residual the
+       * step's loads cause at the last converged state, not against the
+       * predictor's smaller one).
        */
       NewtonResult
       solve(NonlinearProblem         &problem,
             BorderedVector           &u,
             const ConditionalOStream &out,
-            const bool                allow_continuation) const;
+            const bool                allow_continuation,
+            const double              reference = 0.) const;
 
       unsigned int
       max_iterations() const
@@ -183,7 +190,9 @@ namespace pneuma
 
       /// Newton iterations of @p phase from @p u. @p assembled: the
       /// residual at @p u that the problem has just assembled (with its
-      /// tangent), so that the first iteration does not assemble again.
+      /// tangent), so that the first iteration does not assemble again
+      /// (in a shifted phase @p u must be its anchor, where the shift term
+      /// vanishes).
       bool
       iterate(NonlinearProblem         &problem,
               BorderedVector           &u,
@@ -203,9 +212,13 @@ namespace pneuma
                                 const ConditionalOStream &out,
                                 NewtonResult             &result) const;
 
+      /// The regularised iteration from @p u; leaves in @p r the
+      /// residual at the final @p u. True if the tangent last assembled is
+      /// the one at @p u too (the next phase need not assemble again).
       bool
       continuation(NonlinearProblem         &problem,
                    BorderedVector           &u,
+                   BorderedVector           &r,
                    const double              r_ref,
                    const ConditionalOStream &out,
                    NewtonResult             &result) const;
