@@ -120,35 +120,17 @@ main(int argc, char **argv)
       ok = tangent_check(name, settings, degree, amplitude) && ok;
 
   // Liquid + gas filling of the airbeam tube.
-  const auto s = pneuma_test::run(
-    {{"Geometry/Type", "closed cylinder"},
-     {"Geometry/closed cylinder/Radius", "0.23"},
-     {"Geometry/closed cylinder/Length", "2"},
-     {"Geometry/Global refinements", "3"},
-     {"Materials/Region 0/Thickness", "1e-3"},
-     {"Materials/Region 0/Saint Venant-Kirchhoff/Young's modulus", "7.6e9"},
-     {"Materials/Region 1/Thickness", "1e-2"},
-     {"Materials/Region 1/Saint Venant-Kirchhoff/Young's modulus", "2.1e11"},
-     {"Materials/Region 2/Thickness", "1e-2"},
-     {"Materials/Region 2/Saint Venant-Kirchhoff/Young's modulus", "2.1e11"},
-     {"Boundary conditions/Rigid regions", "1, 2"},
-     {"Boundary conditions/Fixed points",
-      "0,0,0: xyz; 2,0,0: yz; 0.05,0,0.23: y"},
-     {"Chambers/Number of chambers", "1"},
-     {"Chambers/Chamber 1/Regions", "0, 1, 2"},
-     {"Chambers/Chamber 1/Filling", "liquid and gas"},
-     {"Chambers/Chamber 1/Gas/Control", "gas amount"},
-     {"Chambers/Chamber 1/Gas/Gas amount/Function expression", "1 + min(t, 1)"},
-     {"Chambers/Chamber 1/Liquid/Volume/Function expression",
-      "0.15*max(t - 1, 0)"},
-     {"Load stepping/Stage end times", "1, 2"},
-     {"Load stepping/Initial increment", "0.25"},
+  pneuma_test::Settings liquid_gas = pneuma_test::liquid_gas_tube();
+  liquid_gas.insert(
+    liquid_gas.end(),
+    {{"Load stepping/Initial increment", "0.25"},
      {"Load stepping/Maximum increment", "0.25"},
      {"Newton/Residual tolerance", "1e-12"},
      // The tangent's rate, observed from the last state (from the
      // extrapolated start the last step is too short to show it).
      {"Load stepping/Extrapolation", "none"},
      {"Output/Directory", "output-liquid-gas"}});
+  const auto s      = pneuma_test::run(liquid_gas);
   ok                = ok && s.exit_code == 0;
   const auto &r     = s.last_residual_history;
   double      order = 0.;

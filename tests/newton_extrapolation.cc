@@ -104,35 +104,16 @@ main(int argc, char **argv)
   {
     pneuma::RunResult runs[2];
     for (const unsigned int k : {0u, 1u})
-      runs[k] = pneuma_test::run(
-        {{"Geometry/Type", "closed cylinder"},
-         {"Geometry/closed cylinder/Radius", "0.23"},
-         {"Geometry/closed cylinder/Length", "2"},
-         {"Geometry/Global refinements", "3"},
-         {"Materials/Region 0/Thickness", "1e-3"},
-         {"Materials/Region 0/Saint Venant-Kirchhoff/Young's modulus", "7.6e9"},
-         {"Materials/Region 1/Thickness", "1e-2"},
-         {"Materials/Region 1/Saint Venant-Kirchhoff/Young's modulus",
-          "2.1e11"},
-         {"Materials/Region 2/Thickness", "1e-2"},
-         {"Materials/Region 2/Saint Venant-Kirchhoff/Young's modulus",
-          "2.1e11"},
-         {"Boundary conditions/Rigid regions", "1, 2"},
-         {"Boundary conditions/Fixed points",
-          "0,0,0: xyz; 2,0,0: yz; 0.05,0,0.23: y"},
-         {"Chambers/Number of chambers", "1"},
-         {"Chambers/Chamber 1/Regions", "0, 1, 2"},
-         {"Chambers/Chamber 1/Filling", "liquid and gas"},
-         {"Chambers/Chamber 1/Gas/Control", "gas amount"},
-         {"Chambers/Chamber 1/Gas/Gas amount/Function expression",
-          "1 + min(t, 1)"},
-         {"Chambers/Chamber 1/Liquid/Volume/Function expression",
-          "0.15*max(t - 1, 0)"},
-         {"Load stepping/Stage end times", "1, 2"},
-         {"Load stepping/Initial increment", "0.125"},
-         {"Load stepping/Maximum increment", "0.125"},
-         {"Load stepping/Extrapolation", k == 0 ? "linear" : "none"},
-         {"Output/Directory", "output-tube"}});
+      {
+        pneuma_test::Settings settings = pneuma_test::liquid_gas_tube();
+        settings.insert(settings.end(),
+                        {{"Load stepping/Initial increment", "0.125"},
+                         {"Load stepping/Maximum increment", "0.125"},
+                         {"Load stepping/Extrapolation",
+                          k == 0 ? "linear" : "none"},
+                         {"Output/Directory", "output-tube"}});
+        runs[k] = pneuma_test::run(settings);
+      }
     const double V0  = runs[0].history.front().get("c1_volume");
     const double p_a = 101325.;
     ok               = pneuma_test::check(

@@ -159,6 +159,40 @@ namespace pneuma_test
             {"Load stepping/Maximum increment", "0.25"}};
   }
 
+  /**
+   * The airbeam tube (R 0.23 m, L 2 m, 1 mm SVK wall, rigid steel end
+   * plates, Q1, 3 refinements) as one chamber of liquid and gas: the gas
+   * amount doubles over t in [0, 1], then 0.15 m^3 of liquid is pumped in
+   * over [1, 2] (two stages). The stepping comes from the caller.
+   */
+  inline Settings
+  liquid_gas_tube()
+  {
+    return {
+      {"Geometry/Type", "closed cylinder"},
+      {"Geometry/closed cylinder/Radius", "0.23"},
+      {"Geometry/closed cylinder/Length", "2"},
+      {"Geometry/Global refinements", "3"},
+      {"Materials/Region 0/Thickness", "1e-3"},
+      {"Materials/Region 0/Saint Venant-Kirchhoff/Young's modulus", "7.6e9"},
+      {"Materials/Region 1/Thickness", "1e-2"},
+      {"Materials/Region 1/Saint Venant-Kirchhoff/Young's modulus", "2.1e11"},
+      {"Materials/Region 2/Thickness", "1e-2"},
+      {"Materials/Region 2/Saint Venant-Kirchhoff/Young's modulus", "2.1e11"},
+      {"Boundary conditions/Rigid regions", "1, 2"},
+      {"Boundary conditions/Fixed points",
+       "0,0,0: xyz; 2,0,0: yz; 0.05,0,0.23: y"},
+      {"Chambers/Number of chambers", "1"},
+      {"Chambers/Chamber 1/Regions", "0, 1, 2"},
+      {"Chambers/Chamber 1/Filling", "liquid and gas"},
+      {"Chambers/Chamber 1/Gas/Control", "gas amount"},
+      {"Chambers/Chamber 1/Gas/Gas amount/Function expression",
+       "1 + min(t, 1)"},
+      {"Chambers/Chamber 1/Liquid/Volume/Function expression",
+       "0.15*max(t - 1, 0)"},
+      {"Load stepping/Stage end times", "1, 2"}};
+  }
+
   /// The gas amount V_n/V0 (adiabatic air, kappa 1.4, p_a = 101325 Pa)
   /// that keeps a neo-Hookean balloon (mu H/R = 1000 Pa) on its
   /// equilibrium path at the stretch l = 1 + t: l^3 (1 + p(l)/p_a)^(1/kappa).

@@ -267,9 +267,9 @@ namespace pneuma
                        CellIntegrals      &out)
       {
         const unsigned int n_nodes = reference.n_nodes();
-        if (at == FreeSurfaceQuadrature::Location::wet)
-          integrate(reference.n_q_points(),
-                    reference_points(reference, cell_index),
+        const auto wetted = [&](const unsigned int n_q, const auto &point_at) {
+          integrate(n_q,
+                    point_at,
                     dof,
                     n_nodes,
                     local_u,
@@ -279,6 +279,10 @@ namespace pneuma
                     unit_gravity,
                     g,
                     out);
+        };
+        if (at == FreeSurfaceQuadrature::Location::wet)
+          wetted(reference.n_q_points(),
+                 reference_points(reference, cell_index));
         else if (at == FreeSurfaceQuadrature::Location::cut)
           {
             FEValues<2, 3> cut_values(mapping,
@@ -289,18 +293,9 @@ namespace pneuma
             Tensor<1, 3> n;
             for (unsigned int q = 0; q < cut_values.n_quadrature_points; ++q)
               n += cut_values.normal_vector(q);
-            integrate(
+            wetted(
               cut_values.n_quadrature_points,
-              fe_points(cut_values, dof, n_nodes, n * normal >= 0. ? 1. : -1.),
-              dof,
-              n_nodes,
-              local_u,
-              s,
-              load,
-              true,
-              unit_gravity,
-              g,
-              out);
+              fe_points(cut_values, dof, n_nodes, n * normal >= 0. ? 1. : -1.));
           }
       }
     } // namespace

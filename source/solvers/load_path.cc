@@ -480,12 +480,13 @@ namespace pneuma
         return tangent;
       };
       const double psi2 = constraint_name == "spherical" ? 1. : 0.;
-      // The secant predictor of a path-controlled stage (a restart keeps
-      // it).
-      BorderedVector previous_increment;
-      if (current.secant && step_increment.field.size() > 0)
-        previous_increment =
-          PathConstraintProblem::extend(step_increment, current.increment_dt);
+      // The secant predictor of a path-controlled stage (where
+      // current.secant says it has one; a restart keeps it): the last
+      // accepted step, extended by its change of the load factor.
+      const auto secant = [&]() {
+        return PathConstraintProblem::extend(step_increment,
+                                             current.increment_dt);
+      };
 
       enum class Forced
       {
@@ -536,6 +537,9 @@ namespace pneuma
           const Control control = control_of(stage);
           const double  t_old   = t;
           last                  = result.state;
+          // A step from the unstressed state may use Newton's continuation,
+          // and is no increment to extrapolate.
+          const bool from_unstressed = last.field.linfty_norm() == 0.;
 
           // Entering a path-controlled stage: its scales from the path's
           // tangent at the converged state.
@@ -575,7 +579,6 @@ namespace pneuma
               current.path_steps         = 0;
               current.last_dtau          = 0.;
               current.limit_since_return = false;
-              previous_increment         = BorderedVector();
               current.secant             = false;
               forced                     = Forced::none;
               dt                         = stepping.initial();
@@ -630,11 +633,8 @@ namespace pneuma
                   break;
                 }
               // 2. Solve.
-              newton = newton_solver.solve(model,
-                                           result.state,
-                                           out,
-                                           last.field.linfty_norm() == 0.,
-                                           reference);
+              newton = newton_solver.solve(
+                model, result.state, out, from_unstressed, reference);
             }
           else
             {
@@ -649,8 +649,8 @@ namespace pneuma
               const bool by_displacement =
                 control == Control::displacement || forced == Forced::to_target;
               BorderedVector direction;
-              if (previous_increment.field.size() > 0)
-                direction = previous_increment;
+              if (current.secant)
+                direction = secant();
               else
                 {
                   double force_rate = 0.;
@@ -739,8 +739,7 @@ namespace pneuma
               step -= x_last;
               const double m_old = monitor(last.field),
                            m_new = monitor(result.state.field);
-              if (previous_increment.field.size() > 0
-                  && problem.dot(step, previous_increment) < 0.)
+              if (current.secant && problem.dot(step, secant()) < 0.)
                 {
                   newton.converged      = false;
                   newton.failure_reason = "the step turned back along the path";
@@ -960,19 +959,17 @@ namespace pneuma
           current.reference_rate =
             newton.reference / std::max(std::abs(t_new - t_old), 1e-300);
           current.increment_stage = stage;
-          current.increment_load =
-            !path_step && !switched && last.field.linfty_norm() > 0.;
-          t = t_new;
+          current.increment_load  = !path_step && !switched && !from_unstressed;
+          t                       = t_new;
           ++result.steps;
           model.current_time = t_new;
           model.commit_step(t_new, result.state);
           result.step_iterations.push_back(newton.iterations);
           result.last_residual_history = newton.residual_history;
           result.residual_histories.push_back(newton.residual_history);
-          LA::Vector increment(result.state.field);
-          increment -= last.field;
           const double ratio =
-            std::abs(t_new - t_old) / std::max(increment.l2_norm(), 1e-300);
+            std::abs(t_new - t_old)
+            / std::max(step_increment.field.l2_norm(), 1e-300);
           if (stage != stiffness_stage)
             {
               stiffness_stage     = stage;
@@ -987,10 +984,8 @@ namespace pneuma
               // The path's record: the secant, the arc length, and the
               // load factor turning back (a limit point, if no stability
               // check located it).
-              BorderedVector step =
-                PathConstraintProblem::extend(result.state, t_new);
-              step -= PathConstraintProblem::extend(last, t_old);
-              step_arc = problem.arc_length(step);
+              step_arc = problem.arc_length(
+                PathConstraintProblem::extend(step_increment, t_new - t_old));
               current.arc_length += step_arc;
               ++current.path_steps;
               const double dtau = t_new - t_old;
@@ -1019,10 +1014,9 @@ namespace pneuma
               // After a branch switch the next predictor is the tangent
               // of the secondary branch, not the secant across branches.
               if (switched)
-                previous_increment = BorderedVector();
+                current.secant = false;
               else if (reached == Forced::none)
-                previous_increment = step;
-              current.secant = previous_increment.field.size() > 0;
+                current.secant = true;
             }
           out << "  converged in " << newton.iterations << " iterations ("
               << newton.convergence_test << "), wall " << std::fixed
@@ -1047,7 +1041,6 @@ namespace pneuma
               if (reached == Forced::to_stage_end)
                 {
                   current.path_active = false;
-                  previous_increment  = BorderedVector();
                   current.secant      = false;
                   dt                  = stepping.initial();
                 }
