@@ -77,6 +77,7 @@ check "$dir/valid.prm"              1 "Materials/Region 1: the mesh has cells wi
 check "$dir/valid.prm"              1 "Materials/Heating: unknown subsection" --set "Materials/Heating/Power=1"
 check "$dir/valid.prm"              1 "Materials/Region 0/Saint Venant-Kirchhoff/Poisson's ratio: must lie in (-1, 0.5)" --set "Materials/Region 0/Saint Venant-Kirchhoff/Poisson's ratio=-1"
 check "$dir/valid.prm"              1 "Materials/Region 0/Wrinkling residual stiffness: must be below 1e-2" --set "Materials/Region 0/Wrinkling=tension field" --set "Materials/Region 0/Wrinkling residual stiffness=0.5"
+check "$dir/valid.prm"              1 "Materials/Region 0/Wrinkling smoothing: The string <-1e-5> does not match" --set "Materials/Region 0/Wrinkling=tension field" --set "Materials/Region 0/Wrinkling smoothing=-1e-5"
 check "$dir/valid.prm"              1 "Materials/Region 0/Warp direction: must be a non-zero vector" --set "Materials/Region 0/Warp direction=1, x, 0"
 check "$dir/valid.prm"              1 "Materials/Region 0/Warp direction: the law 'orthotropic' is anisotropic" --set "Materials/Region 0/Law=orthotropic"
 check "$dir/valid.prm"              1 "Materials/Region 0/Warp direction: it is within 6 degrees of the surface normal" --set "Materials/Region 0/Law=orthotropic" --set "Materials/Region 0/Warp direction=0, 0, 1"

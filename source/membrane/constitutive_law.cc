@@ -61,6 +61,15 @@ namespace pneuma
             "regular tangent; 0 <= eps < 1e-2.",
             Patterns::Double(0.));
           prm.add_parameter(
+            "Wrinkling smoothing",
+            slot->smoothing,
+            "Strain width zeta over which the relaxed energy is smoothed "
+            "(an interior-point barrier mu zeta^2 on the wrinkling strain, "
+            "doc/theory.md): the tangent becomes continuous through state "
+            "changes; the stress of a taut point changes by about "
+            "(zeta/strain)^2 of itself. 0: the exact relaxed energy.",
+            Patterns::Double(0., 1e-2));
+          prm.add_parameter(
             "Warp direction",
             slot->warp_direction,
             "A vector 'x, y, z' whose projection onto the surface is the "
@@ -181,7 +190,8 @@ namespace pneuma
                             + std::to_string(slot->residual_stiffness));
               auto relaxed =
                 std::make_shared<TensionFieldLaw>(m.law,
-                                                  slot->residual_stiffness);
+                                                  slot->residual_stiffness,
+                                                  slot->smoothing);
               m.tension_field = relaxed;
               m.law           = relaxed;
             }

@@ -32,6 +32,19 @@ namespace pneuma
                - std::hypot(0.5 * (A[0][0] - A[1][1]), A[0][1]);
       }
 
+      /// The map X -> A X A on symmetric tensors, as a rank-4 tensor.
+      SymmetricTensor<4, 2>
+      sandwich(const SymmetricTensor<2, 2> &A)
+      {
+        SymmetricTensor<4, 2> K;
+        for (unsigned int i = 0; i < 2; ++i)
+          for (unsigned int j = i; j < 2; ++j)
+            for (unsigned int k = 0; k < 2; ++k)
+              for (unsigned int l = k; l < 2; ++l)
+                K[i][j][k][l] = 0.5 * (A[i][k] * A[j][l] + A[i][l] * A[j][k]);
+        return K;
+      }
+
       Tensor<1, 2>
       unit(const double angle)
       {
@@ -43,7 +56,8 @@ namespace pneuma
     } // namespace
 
     TensionFieldLaw::TensionFieldLaw(std::shared_ptr<const ConstitutiveLaw> law,
-                                     const double residual_stiffness)
+                                     const double residual_stiffness,
+                                     const double smoothing)
       : law(std::move(law))
       , residual_stiffness(residual_stiffness)
       , C_free(unit_symmetric_tensor<2>())
@@ -60,6 +74,109 @@ namespace pneuma
           // dS = D : dE = D : dC/2.
           C_free -= 2. * (invert(D) * S);
         }
+      // The barrier weight: a uniaxial strain e against the stiffest
+      // direct modulus d of the law at C_0 is smoothed over |e| of about
+      // zeta, delta = d zeta^2 / 4 (the scalar problem s = d (e + b/2) =
+      // 2 delta / b has b = zeta at e = 0).
+      this->law->evaluate(C_free, S, D);
+      delta =
+        std::max(D[0][0][0][0], D[1][1][1][1]) * smoothing * smoothing / 4.;
+      if (delta > 0.)
+        {
+          SymmetricTensor<2, 2> S_r, B;
+          SymmetricTensor<4, 2> D_r;
+          this->law->evaluate(C_free, S, D);
+          smoothed(C_free, S, D, S_r, D_r, B);
+          energy_offset = this->law->strain_energy(C_free + B)
+                          - delta * std::log(determinant(B));
+        }
+    }
+
+    bool
+    TensionFieldLaw::smoothed(const SymmetricTensor<2, 2> &C,
+                              const SymmetricTensor<2, 2> &S_plain,
+                              const SymmetricTensor<4, 2> &D_plain,
+                              SymmetricTensor<2, 2>       &S,
+                              SymmetricTensor<4, 2>       &D,
+                              SymmetricTensor<2, 2>       &B) const
+    {
+      // Start: each principal direction v of S(C) on its own, the scalar
+      // barrier problem s + d b/2 = 2 delta/b with d = v.v:D:v.v.
+      B             = SymmetricTensor<2, 2>();
+      const auto ev = eigenvectors(S_plain);
+      for (const auto &[s, v] : ev)
+        {
+          const SymmetricTensor<2, 2> V = sym_dyad(v, v);
+          const double                d = std::max(V * (D_plain * V), 1e-300);
+          const double                q = std::sqrt(s * s + 4. * d * delta);
+          B += (s > 0. ? 4. * delta / (s + q) : (q - s) / d) * V;
+        }
+      // Newton on g(B) = S(C + B)/2 - delta B^-1 = 0, the stationarity of
+      // the convex f(B) = W(C + B) - delta ln det B, inside B > 0: a full
+      // step that lowers |g| is taken (near the solution f no longer
+      // resolves the decrease), else backtracking on f (Armijo).
+      const auto f = [&](const SymmetricTensor<2, 2> &X) {
+        return law->strain_energy(C + X) - delta * std::log(determinant(X));
+      };
+      const auto gradient = [&](const SymmetricTensor<2, 2> &X) {
+        law->evaluate(C + X, S, D);
+        return SymmetricTensor<2, 2>(0.5 * S - delta * invert(X));
+      };
+      const double          floor = 1e-14 * law->initial_shear_modulus();
+      SymmetricTensor<2, 2> g     = gradient(B);
+      // The round-off of g grows with the condition of B (a wrinkled
+      // point's B is nearly of rank one): a full step that no longer
+      // lowers a |g| already below 1e-9 of its terms ends the iteration.
+      bool at_floor = false;
+      for (unsigned int it = 0; it < 50; ++it)
+        {
+          const SymmetricTensor<2, 2> B_inv = invert(B);
+          const double scale = 0.5 * S.norm() + delta * B_inv.norm();
+          if (g.norm() <= 1e-13 * scale + floor || at_floor)
+            {
+              // dS/dE = D - D (D + 4 delta K)^-1 D = (D^-1 + (B.B)/(4
+              // delta))^-1, K: X -> B^-1 X B^-1 (doc/theory.md).
+              D = invert(invert(D) + sandwich(B) / (4. * delta));
+              return true;
+            }
+          const SymmetricTensor<4, 2> H  = 0.25 * D + delta * sandwich(B_inv);
+          const SymmetricTensor<2, 2> dB = -(invert(H) * g);
+          SymmetricTensor<2, 2>       trial = B + dB;
+          if (min_eigenvalue(trial) > 0.)
+            {
+              const SymmetricTensor<2, 2> g_trial = gradient(trial);
+              if (g_trial.norm() < g.norm())
+                {
+                  B = trial;
+                  g = g_trial;
+                  continue;
+                }
+              if (g.norm() <= 1e-9 * scale)
+                {
+                  at_floor = true;
+                  g        = gradient(B);
+                  continue;
+                }
+            }
+          const double f_B   = f(B);
+          const double slope = g * dB;
+          bool         taken = false;
+          for (double alpha = 0.5; alpha > 1e-12; alpha *= 0.5)
+            {
+              trial = B + alpha * dB;
+              if (min_eigenvalue(trial) > 0.
+                  && f(trial) <= f_B + 1e-4 * alpha * slope)
+                {
+                  taken = true;
+                  break;
+                }
+            }
+          if (!taken)
+            break;
+          B = trial;
+          g = gradient(B);
+        }
+      return false;
     }
 
     WrinklingState
@@ -183,9 +300,20 @@ namespace pneuma
     {
       SymmetricTensor<2, 2> S0;
       SymmetricTensor<4, 2> D0;
-      double                beta;
-      Tensor<1, 2>          m;
-      const WrinklingState  state = solve(C, S0, D0, S, D, beta, m);
+      if (delta > 0.)
+        {
+          law->evaluate(C, S0, D0);
+          SymmetricTensor<2, 2> B;
+          if (!smoothed(C, S0, D0, S, D, B))
+            S = std::numeric_limits<double>::quiet_NaN()
+                * unit_symmetric_tensor<2>();
+          S += residual_stiffness * S0;
+          D += residual_stiffness * D0;
+          return;
+        }
+      double               beta;
+      Tensor<1, 2>         m;
+      const WrinklingState state = solve(C, S0, D0, S, D, beta, m);
       // beta > 0 at every wrinkled state that solve() accepts (beta = 0
       // only where it failed and S is not finite).
       if (state.kind == WrinklingState::wrinkled && beta > 0.)
@@ -214,6 +342,15 @@ namespace pneuma
     double
     TensionFieldLaw::strain_energy(const SymmetricTensor<2, 2> &C) const
     {
+      if (delta > 0.)
+        {
+          SymmetricTensor<2, 2> S0, S, B;
+          SymmetricTensor<4, 2> D0, D;
+          law->evaluate(C, S0, D0);
+          smoothed(C, S0, D0, S, D, B);
+          return law->strain_energy(C + B) - delta * std::log(determinant(B))
+                 - energy_offset + residual_stiffness * law->strain_energy(C);
+        }
       return law->strain_energy(state(C).C_star)
              + residual_stiffness * law->strain_energy(C);
     }

@@ -155,6 +155,7 @@ namespace pneuma
         std::string                warp_direction;
         std::string                prestress          = "0";
         double                     residual_stiffness = 1e-6;
+        double                     smoothing          = 0.;
         std::map<std::string, std::unique_ptr<ConstitutiveLaw>> laws;
       };
       std::vector<std::unique_ptr<Slot>>                   slots;

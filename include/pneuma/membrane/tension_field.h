@@ -35,6 +35,13 @@
  * ("Wrinkling residual stiffness"), so a wholly slack patch still has a
  * regular tangent; it carries \f$\varepsilon\f$ of the plain law's
  * compression and is part of the model.
+ *
+ * With a smoothing width zeta > 0 ("Wrinkling smoothing") the relaxed
+ * energy is replaced by its interior-point smoothing
+ * \f$W_\delta(C) = \min_{B \succ 0} W(C + B) - \delta \ln\det B\f$,
+ * \f$\delta = d\zeta^2/4\f$: the complementarity \f$S(C^*) B = 0\f$ becomes
+ * \f$S(C^*) B = 2\delta I\f$, and stress and tangent are continuous
+ * through the state changes (doc/theory.md §2.1, "Smoothing").
  */
 
 #include <pneuma/membrane/constitutive_law.h>
@@ -76,9 +83,12 @@ namespace pneuma
     class TensionFieldLaw : public ConstitutiveLaw
     {
     public:
-      /// Wrap @p law; keep the fraction @p residual_stiffness of it.
+      /// Wrap @p law; keep the fraction @p residual_stiffness of it;
+      /// smooth the relaxed energy over the strain width @p smoothing
+      /// (0: the exact relaxed energy).
       TensionFieldLaw(std::shared_ptr<const ConstitutiveLaw> law,
-                      double residual_stiffness);
+                      double                                 residual_stiffness,
+                      double                                 smoothing = 0.);
 
       /// The constants belong to the wrapped law: nothing to declare.
       void
@@ -139,8 +149,28 @@ namespace pneuma
             double                      &beta,
             dealii::Tensor<1, 2>        &m) const;
 
+      /**
+       * The smoothed relaxed stress and tangent at C: the minimiser B of
+       * W(C + B) - delta ln det B over positive definite B (Newton's
+       * method from the principal-direction estimate), S = S(C + B).
+       * Returns false if the inner Newton did not converge. @p B0 is the
+       * start (zero: estimated here).
+       */
+      bool
+      smoothed(const SymmetricTensor<2, 2> &C,
+               const SymmetricTensor<2, 2> &S_plain,
+               const SymmetricTensor<4, 2> &D_plain,
+               SymmetricTensor<2, 2>       &S,
+               SymmetricTensor<4, 2>       &D,
+               SymmetricTensor<2, 2>       &B) const;
+
       std::shared_ptr<const ConstitutiveLaw> law;
       double                                 residual_stiffness;
+      /// The barrier weight delta = d zeta^2 / 4 of the smoothing, d the
+      /// law's stiffest direct modulus (0: no smoothing).
+      double delta = 0.;
+      /// -delta ln det B at C_0, so that the smoothed energy is zero there.
+      double energy_offset = 0.;
       /// The stress-free metric C_0 of the wrapped law (I unless the law
       /// carries a prestress).
       SymmetricTensor<2, 2> C_free;
