@@ -102,7 +102,19 @@ main(int argc, char **argv)
     std::printf("smoothed, residual stiffness 1e-6: the two steps converge: "
                 "%s\n",
                 converged ? "PASS" : "FAIL");
-  ok            = ok && converged;
+  ok = ok && converged;
+  // Newton's order at the end of the last step, while the wrinkled zone's
+  // border still moves: q = log(r_k+1/r_k) / log(r_k/r_k-1) of the last
+  // iteration.
+  const auto &h = z.last_residual_history;
+  double      q = 0.;
+  if (h.size() >= 3)
+    q = std::log(h[h.size() - 1] / h[h.size() - 2])
+        / std::log(h[h.size() - 2] / h[h.size() - 3]);
+  if (root)
+    std::printf("smoothed: Newton's order in the last iteration %s\n",
+                q >= 1.6 ? ">= 1.6: PASS" : "< 1.6: FAIL");
+  ok            = ok && q >= 1.6;
   const auto dz = z.summary.get_vector("p0_wrinkle_direction");
   ok            = pneuma_test::check("smoothed: middle tension angle [deg]",
                           std::atan2(dz[1], dz[0]) * 180. / M_PI,
