@@ -3,7 +3,8 @@
 # airbeam at 1 bar under a mid-span force (parameter_files/
 # airbeam_wrinkling.prm):
 # 1. cost where taut: the inflation (stage 1, the same path and Newton
-#    iterations) with Wrinkling = none and = tension field at 3, 4 and 5
+#    iterations) with Wrinkling = none, = tension field, and = tension
+#    field smoothed over 1e-5 (Wrinkling smoothing) at 3, 4 and 5
 #    refinements: wall time, peak memory, assembly seconds per Newton
 #    iteration (the plain law cannot follow the wrinkling path: it carries
 #    compression and fails at 10.1 kN, 2 refinements lower);
@@ -11,7 +12,10 @@
 #    after wrinkling starts, and the collapse load, along the whole path to 0.25 m (4 refinements), with
 #    the load-deflection plot (scripts/plot_wrinkling.py) in $OUT;
 # 3. the cantilever tube of tests/wrinkling_tube continued through its
-#    limit point (tip deflection 0.25 L).
+#    limit point (tip deflection 0.25 L);
+# 4. Newton through state changes: Wong & Pellegrino's free-edged sheet
+#    (tests/shear_sheet) at residual stiffness 1e-3 and 1e-6, exact and
+#    smoothed.
 # Usage: benchmarks/wrinkling/run.sh [OUT]   (from anywhere; builds if needed)
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -29,11 +33,14 @@ echo
 echo "| refinements | dofs | wrinkling | wall s | peak MB | steps | Newton iterations | assembly s per iteration |"
 echo "|---|---|---|---|---|---|---|---|"
 for r in 3 4 5; do
-  for w in none "tension field"; do
+  for w in none "tension field" "smoothed"; do
     d="$out/cost-$r-${w// /_}"
+    law=$w zeta=0
+    [ "$w" = smoothed ] && law="tension field" zeta=1e-5
     /usr/bin/time -f "%e %M" -o "$out/time" "$pneuma" "$scene" "${quiet[@]}" \
       --set "Geometry/Global refinements=$r" --set "Output/Directory=$d" \
-      --set "Materials/Region 0/Wrinkling=$w" \
+      --set "Materials/Region 0/Wrinkling=$law" \
+      --set "Materials/Region 0/Wrinkling smoothing=$zeta" \
       --set "Load stepping/Stage end times=1" --set "Load stepping/Control=load" \
       --set "Load stepping/Path following/Target monitor value=" > /dev/null
     read -r wall kb < <(tail -n 1 "$out/time")
@@ -69,3 +76,31 @@ d="$out/tube"
   --set "Output/Directory=$d" "${quiet[@]}" > /dev/null || true
 read -r wall kb < <(tail -n 1 "$out/time")
 /usr/bin/python3 "$here/tube_table.py" "$d" "$wall"
+
+echo
+echo "## 4. Newton through state changes: the free-edged sheet in shear"
+echo
+echo "| residual stiffness | smoothing | exit | steps | cut-backs | Newton iterations | wall s | top edge F_x N |"
+echo "|---|---|---|---|---|---|---|---|"
+for case in "1e-3 0" "1e-6 0" "1e-6 1e-5" "1e-3 1e-5"; do
+  read -r eps zeta <<< "$case"
+  d="$out/sheet-$eps-$zeta"
+  code=0
+  /usr/bin/time -f "%e %M" -o "$out/time" timeout 300 "$pneuma" \
+    "$here/shear_sheet.prm" "${quiet[@]}" --set "Output/Directory=$d" \
+    --set "Materials/Region 0/Wrinkling residual stiffness=$eps" \
+    --set "Materials/Region 0/Wrinkling smoothing=$zeta" > /dev/null || code=$?
+  read -r wall kb < <(tail -n 1 "$out/time")
+  /usr/bin/python3 - "$d/summary.json" "$eps" "$zeta" "$code" "$wall" <<'PY'
+import json, sys
+path, eps, zeta, code, wall = sys.argv[1:]
+try:
+    s = json.load(open(path))
+except OSError:
+    print(f"| {eps} | {zeta} | {code} | | | | {wall} | |")
+    sys.exit(0)
+f = s["boundary_3_reaction"][0] if code == "0" else float("nan")
+print(f"| {eps} | {zeta} | {code} | {s['steps']} | {s['cutbacks']} | "
+      f"{s['newton_iterations']} | {wall} | {f:.4f} |")
+PY
+done
