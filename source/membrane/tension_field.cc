@@ -100,17 +100,47 @@ namespace pneuma
                               SymmetricTensor<4, 2>       &D,
                               SymmetricTensor<2, 2>       &B) const
     {
-      // Start: each principal direction v of S(C) on its own, the scalar
-      // barrier problem s + d b/2 = 2 delta/b with d = v.v:D:v.v.
-      B             = SymmetricTensor<2, 2>();
-      const auto ev = eigenvectors(S_plain);
-      for (const auto &[s, v] : ev)
+      // Start: the exact relaxed state, each of its directions with the
+      // scalar barrier problem s + d b/2 = 2 delta/b (d = v.v:D:v.v):
+      // - taut: b along each principal direction v of S(C);
+      // - wrinkled: beta m x m, and b along the tension direction p;
+      // - slack: C_0 - C, and the barrier's width zeta = 2 sqrt(delta/d)
+      //   added (its border has a zero eigenvalue).
+      // (Estimating a wrinkled point from S(C) alone starts from a B of
+      // full rank where the solution's is nearly of rank one, far outside
+      // the barrier Newton's region of fast convergence.)
+      const auto scalar = [&](const double s, const double d) {
+        const double q = std::sqrt(s * s + 4. * d * delta);
+        return s > 0. ? 4. * delta / (s + q) : (q - s) / d;
+      };
+      SymmetricTensor<2, 2> S_exact, S_0;
+      SymmetricTensor<4, 2> D_exact, D_0;
+      double                beta = 0.;
+      Tensor<1, 2>          m;
+      const WrinklingState  exact =
+        solve(C, S_0, D_0, S_exact, D_exact, beta, m);
+      B = SymmetricTensor<2, 2>();
+      if (exact.kind == WrinklingState::wrinkled && beta > 0.
+          && std::isfinite(S_exact.norm()))
         {
-          const SymmetricTensor<2, 2> V = sym_dyad(v, v);
-          const double                d = std::max(V * (D_plain * V), 1e-300);
-          const double                q = std::sqrt(s * s + 4. * d * delta);
-          B += (s > 0. ? 4. * delta / (s + q) : (q - s) / d) * V;
+          const Tensor<1, 2>         &p = exact.tension_direction;
+          const SymmetricTensor<2, 2> P = sym_dyad(p, p);
+          B                             = beta * sym_dyad(m, m)
+              + scalar(p * (S_exact * p), std::max(P * (D_exact * P), 1e-300))
+                  * P;
         }
+      else if (exact.kind == WrinklingState::slack)
+        {
+          const double d = std::max(D_plain[0][0][0][0], D_plain[1][1][1][1]);
+          B =
+            C_free - C + 2. * std::sqrt(delta / d) * unit_symmetric_tensor<2>();
+        }
+      else
+        for (const auto &[s, v] : eigenvectors(S_plain))
+          {
+            const SymmetricTensor<2, 2> V = sym_dyad(v, v);
+            B += scalar(s, std::max(V * (D_plain * V), 1e-300)) * V;
+          }
       // Newton on g(B) = S(C + B)/2 - delta B^-1 = 0, the stationarity of
       // the convex f(B) = W(C + B) - delta ln det B, inside B > 0: a full
       // step that lowers |g| is taken (near the solution f no longer
@@ -122,27 +152,41 @@ namespace pneuma
         law->evaluate(C + X, S, D);
         return SymmetricTensor<2, 2>(0.5 * S - delta * invert(X));
       };
+      // Inside the barrier with a margin that B^-1 resolves.
+      const auto inside = [](const SymmetricTensor<2, 2> &X) {
+        return min_eigenvalue(X) > 1e-12 * X.norm();
+      };
       const double          floor = 1e-14 * law->initial_shear_modulus();
       SymmetricTensor<2, 2> g     = gradient(B);
+      // The tangent at the converged B: dS/dE = D - D (D + 4 delta K)^-1 D
+      // = (D^-1 + (B.B)/(4 delta))^-1, K: X -> B^-1 X B^-1 (doc/theory.md).
+      const auto converged = [&]() {
+        D = invert(invert(D) + sandwich(B) / (4. * delta));
+        return std::isfinite(D.norm());
+      };
       // The round-off of g grows with the condition of B (a wrinkled
-      // point's B is nearly of rank one): a full step that no longer
-      // lowers a |g| already below 1e-9 of its terms ends the iteration.
-      bool at_floor = false;
+      // point's B is nearly of rank one; beta t / (2 delta) is 1e8 at 10 %
+      // compression with zeta = 1e-5): a full step that no longer lowers
+      // |g|, or leaves B > 0, ends the iteration if |g| is below 1e-9 of
+      // its terms or the step would change the stress by less than 1e-7
+      // of it.
       for (unsigned int it = 0; it < 50; ++it)
         {
           const SymmetricTensor<2, 2> B_inv = invert(B);
           const double scale = 0.5 * S.norm() + delta * B_inv.norm();
-          if (g.norm() <= 1e-13 * scale + floor || at_floor)
-            {
-              // dS/dE = D - D (D + 4 delta K)^-1 D = (D^-1 + (B.B)/(4
-              // delta))^-1, K: X -> B^-1 X B^-1 (doc/theory.md).
-              D = invert(invert(D) + sandwich(B) / (4. * delta));
-              return true;
-            }
+          if (g.norm() <= 1e-13 * scale + floor)
+            return converged();
           const SymmetricTensor<4, 2> H  = 0.25 * D + delta * sandwich(B_inv);
           const SymmetricTensor<2, 2> dB = -(invert(H) * g);
-          SymmetricTensor<2, 2>       trial = B + dB;
-          if (min_eigenvalue(trial) > 0.)
+          if (!std::isfinite(dB.norm()))
+            break;
+          // The step's change of the stress: where it is below round-off
+          // nothing more can be gained.
+          const double change = 0.5 * (D * dB).norm();
+          if (change <= 1e-14 * S.norm() + floor)
+            return converged();
+          SymmetricTensor<2, 2> trial = B + dB;
+          if (inside(trial))
             {
               const SymmetricTensor<2, 2> g_trial = gradient(trial);
               if (g_trial.norm() < g.norm())
@@ -151,21 +195,17 @@ namespace pneuma
                   g = g_trial;
                   continue;
                 }
-              if (g.norm() <= 1e-9 * scale)
-                {
-                  at_floor = true;
-                  g        = gradient(B);
-                  continue;
-                }
+              g = gradient(B); // S and D at B again
             }
+          if (g.norm() <= 1e-9 * scale || change <= 1e-7 * S.norm())
+            return converged();
           const double f_B   = f(B);
           const double slope = g * dB;
           bool         taken = false;
           for (double alpha = 0.5; alpha > 1e-12; alpha *= 0.5)
             {
               trial = B + alpha * dB;
-              if (min_eigenvalue(trial) > 0.
-                  && f(trial) <= f_B + 1e-4 * alpha * slope)
+              if (inside(trial) && f(trial) <= f_B + 1e-4 * alpha * slope)
                 {
                   taken = true;
                   break;
