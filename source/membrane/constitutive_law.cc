@@ -64,8 +64,9 @@ namespace pneuma
             "Wrinkling smoothing",
             slot->smoothing,
             "Strain width zeta over which the relaxed energy is smoothed "
-            "(an interior-point barrier mu zeta^2 on the wrinkling strain, "
-            "doc/theory.md): the tangent becomes continuous through state "
+            "(an interior-point barrier d zeta^2/4, d the law's stiffest "
+            "modulus, doc/theory.md 2.1): the tangent becomes continuous "
+            "through state "
             "changes; the stress of a taut point changes by about "
             "(zeta/strain)^2 of itself. 0: the exact relaxed energy.",
             Patterns::Double(0., 1e-2));

@@ -85,7 +85,6 @@ namespace pneuma
         {
           SymmetricTensor<2, 2> S_r, B;
           SymmetricTensor<4, 2> D_r;
-          this->law->evaluate(C_free, S, D);
           smoothed(C_free, S, D, S_r, D_r, B);
           energy_offset = this->law->strain_energy(C_free + B)
                           - delta * std::log(determinant(B));
@@ -94,8 +93,8 @@ namespace pneuma
 
     bool
     TensionFieldLaw::smoothed(const SymmetricTensor<2, 2> &C,
-                              const SymmetricTensor<2, 2> &S_plain,
-                              const SymmetricTensor<4, 2> &D_plain,
+                              SymmetricTensor<2, 2>       &S_plain,
+                              SymmetricTensor<4, 2>       &D_plain,
                               SymmetricTensor<2, 2>       &S,
                               SymmetricTensor<4, 2>       &D,
                               SymmetricTensor<2, 2>       &B) const
@@ -113,12 +112,12 @@ namespace pneuma
         const double q = std::sqrt(s * s + 4. * d * delta);
         return s > 0. ? 4. * delta / (s + q) : (q - s) / d;
       };
-      SymmetricTensor<2, 2> S_exact, S_0;
-      SymmetricTensor<4, 2> D_exact, D_0;
+      SymmetricTensor<2, 2> S_exact;
+      SymmetricTensor<4, 2> D_exact;
       double                beta = 0.;
       Tensor<1, 2>          m;
       const WrinklingState  exact =
-        solve(C, S_0, D_0, S_exact, D_exact, beta, m);
+        solve(C, S_plain, D_plain, S_exact, D_exact, beta, m);
       B = SymmetricTensor<2, 2>();
       if (exact.kind == WrinklingState::wrinkled && beta > 0.
           && std::isfinite(S_exact.norm()))
@@ -342,7 +341,6 @@ namespace pneuma
       SymmetricTensor<4, 2> D0;
       if (delta > 0.)
         {
-          law->evaluate(C, S0, D0);
           SymmetricTensor<2, 2> B;
           if (!smoothed(C, S0, D0, S, D, B))
             S = std::numeric_limits<double>::quiet_NaN()
@@ -386,7 +384,6 @@ namespace pneuma
         {
           SymmetricTensor<2, 2> S0, S, B;
           SymmetricTensor<4, 2> D0, D;
-          law->evaluate(C, S0, D0);
           smoothed(C, S0, D0, S, D, B);
           return law->strain_energy(C + B) - delta * std::log(determinant(B))
                  - energy_offset + residual_stiffness * law->strain_energy(C);

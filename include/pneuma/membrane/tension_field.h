@@ -150,16 +150,16 @@ namespace pneuma
             dealii::Tensor<1, 2>        &m) const;
 
       /**
-       * The smoothed relaxed stress and tangent at C: the minimiser B of
+       * The smoothed relaxed stress S and tangent D at C: the minimiser B of
        * W(C + B) - delta ln det B over positive definite B (Newton's
-       * method from the principal-direction estimate), S = S(C + B).
-       * Returns false if the inner Newton did not converge. @p B0 is the
-       * start (zero: estimated here).
+       * method from the exact relaxed state), S = S(C + B); with the plain
+       * law's stress and tangent at C. Returns false if the inner Newton
+       * did not converge.
        */
       bool
       smoothed(const SymmetricTensor<2, 2> &C,
-               const SymmetricTensor<2, 2> &S_plain,
-               const SymmetricTensor<4, 2> &D_plain,
+               SymmetricTensor<2, 2>       &S_plain,
+               SymmetricTensor<4, 2>       &D_plain,
                SymmetricTensor<2, 2>       &S,
                SymmetricTensor<4, 2>       &D,
                SymmetricTensor<2, 2>       &B) const;
