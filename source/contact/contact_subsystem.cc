@@ -120,7 +120,10 @@ namespace pneuma
       for (const auto &p : parameters.all())
         if (p.smoothed_normal)
           return false;
-      return true;
+      // Coulomb slip, t = mu N t_trial/|t_trial|: the tangent of a slipping
+      // point is not symmetric (Wriggers, ch. 5), however small its
+      // asymmetric part measures.
+      return !contact->slipping();
     }
 
     std::string

@@ -672,6 +672,15 @@ namespace pneuma
         }
     }
 
+    bool
+    ContactSystem::slipping() const
+    {
+      for (const auto &r : last_reports)
+        if (r.slip_points > 0)
+          return true;
+      return false;
+    }
+
     void
     ContactSystem::commit_step()
     {

@@ -626,6 +626,11 @@ namespace pneuma
     tangent  = 0.;
     external = 0.;
     assemble_into(u, current_time, residual, &tangent, &external, coupling);
+    // A subsystem's symmetry can change with its state (friction slip).
+    bool symmetric = true;
+    for (const auto &s : subsystems)
+      symmetric = symmetric && s->symmetric_tangent();
+    solver.set_symmetric_possible(symmetric);
     assembled_state    = u;
     assembled_time     = current_time;
     tangent_is_current = true;

@@ -54,7 +54,8 @@ namespace pneuma
         "general one (friction in "
         "slip, follower pressure on free edges, smoothed contact normals); "
         "automatic: LU where a subsystem's tangent is not symmetric by "
-        "construction (a smoothed contact master normal), else LDLT for "
+        "construction (a smoothed contact master normal, a slipping "
+        "friction point in the assembly), else LDLT for "
         "every tangent whose measured asymmetry is below 1e-10, else LU. "
         "With Package = Amesos_Klu always LU.",
         Patterns::Selection("automatic|LDLT|LU"));

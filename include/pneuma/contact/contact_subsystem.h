@@ -75,7 +75,8 @@ namespace pneuma
                      const LA::Vector &field) const override;
       void
       add_output_fields(const LA::Vector &field) override;
-      /// False with a smoothed master normal on any pair.
+      /// False with a smoothed master normal on any pair, or while a point
+      /// of a pair with friction slips (in the last assembly).
       bool
       symmetric_tangent() const override;
 

@@ -155,6 +155,11 @@ namespace pneuma
         return committed_reports.empty() ? last_reports : committed_reports;
       }
 
+      /// True if a pair with friction had a slipping point in the last
+      /// assembly (the same on every rank): its tangent is not symmetric.
+      bool
+      slipping() const;
+
       /// Contact line load (N, positive in compression) averaged over each
       /// element of cable @p k in the last assembly (every rank).
       Vector<double>

@@ -234,8 +234,10 @@ namespace pneuma
     }
 
     /**
-     * False if this subsystem's tangent is not symmetric by construction
-     * (the smoothed master normal's contact force): the direct solver then
+     * False if this subsystem's tangent, as last assembled, is not
+     * symmetric by construction (the smoothed master normal's contact
+     * force, a slipping friction point; asked after each Newton assembly,
+     * the same answer on every rank): the direct solver then
      * takes the LU path, whatever the measured asymmetry of the assembled
      * matrix (a random projection that a small, local asymmetric part
      * passes below its threshold).
