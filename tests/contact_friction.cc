@@ -122,12 +122,12 @@ main(int argc, char **argv)
         ok &= slipping == active && active > 0.;
         // A slipping point's tangent is not symmetric: LU, whatever the
         // measured asymmetry.
-        ok &= pneuma_test::check("half wrap: LU while the wrap slips (1: yes)",
-                                 result.get("factorization_symmetric") == 0.
-                                   ? 1.
-                                   : 0.,
-                                 1.,
-                                 0.);
+        ok &=
+          pneuma_test::check("half wrap: LU while the wrap slips (1: yes)",
+                             result.get("factorization_symmetric") == 0. ? 1.
+                                                                         : 0.,
+                             1.,
+                             0.);
         // The cable's balance: its end reactions (with the contact forces
         // on its end elements), the dead force and the contact resultant.
         {
