@@ -23,6 +23,7 @@ source "$root/scripts/mpi_environment.sh"
 cd "$root"
 out=output/airbeam_figure7
 mkdir -p "$out"
+source "$root/scripts/scene_tools.sh"
 for bar in 1 2 5 10 20 40; do
   dir="$out/p${bar}bar"
   args=(--set "Chambers/Chamber 1/Gas/Pressure/Function constants=p0=$((bar - 1))e5"
@@ -42,17 +43,6 @@ for bar in 1 2 5 10 20 40; do
 done
 /usr/bin/python3 "$root/scripts/plot_figure7.py" "$out" 1 2 5 10 20 40
 # Pictures of the deformed beams (wrinkling state; the compression element
-# as a tube) where ParaView is installed (Debian: paraview, and xvfb
-# without a display).
-if command -v pvbatch > /dev/null; then
-  render=(pvbatch)
-  [ -z "${DISPLAY:-}" ] && command -v xvfb-run > /dev/null &&
-    render=(xvfb-run -a -s "-screen 0 1920x1080x24" pvbatch)
-  for bar in 1 2 5 10 20 40; do
-    "${render[@]}" "$root/scripts/render_state.py" "$out/p${bar}bar" \
-      "$out/p${bar}bar.png" --title "$bar bar (absolute), last converged state" \
-      2>/dev/null | grep written || echo "p = $bar bar: no picture (pvbatch failed)"
-  done
-else
-  echo "pvbatch not found: install paraview (and xvfb) for pictures of the deformed beams"
-fi
+# as a tube) where ParaView is installed (scripts/install_dependencies.sh
+# --pictures).
+scene_pictures p1bar p2bar p5bar p10bar p20bar p40bar

@@ -8,12 +8,23 @@
 # python3-paraview where ParaView is installed for pictures
 # (scripts/render_state.py): Debian's two packages conflict, so the one
 # present is kept.
+#
+# --pictures also installs ParaView's pvbatch with its Python module and
+# xvfb, for the pictures of the scene scripts (about 1 GB; replaces
+# python3-vtk9 by python3-paraview).
 set -euo pipefail
 packages=(build-essential cmake ccache libdeal.ii-dev libmumps-dev numdiff
           libopenblas0-pthread
           gmsh openmpi-bin time python3 python3-matplotlib
           clang-format)
-if ! dpkg-query -W -f='${Status}' python3-paraview 2>/dev/null |
+case "${1:-}" in
+  "") ;;
+  --pictures) packages+=(paraview python3-paraview xvfb xauth) ;;
+  *) echo "install_dependencies.sh: unknown argument '$1' (known: --pictures)" >&2
+     exit 1 ;;
+esac
+if [ "${1:-}" != --pictures ] &&
+   ! dpkg-query -W -f='${Status}' python3-paraview 2>/dev/null |
      grep -q "install ok installed"; then
   packages+=(python3-vtk9)
 fi

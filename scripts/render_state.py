@@ -4,10 +4,11 @@ Run with pvbatch (Debian package paraview):
 
     pvbatch scripts/render_state.py OUTPUT_DIRECTORY PICTURE.png \
         [--field wrinkling_state] [--scale 1] [--title TEXT]
+        [--cable-radius 0.006]
 
 Reads OUTPUT_DIRECTORY/solution.pvd (the membrane) and, if present,
-OUTPUT_DIRECTORY/cables.pvd (cables and beams, drawn as tubes of their
-section radius), takes the last time step, warps both by their
+OUTPUT_DIRECTORY/cables.pvd (cables and beams, drawn as dark tubes of
+--cable-radius metres), takes the last time step, warps both by their
 displacement times --scale (1: the true deformed shape), colours the
 membrane by --field (a point or cell field of the VTU: wrinkling_state,
 N1, chamber_pressure, ...; default wrinkling_state where the run has it,
@@ -38,6 +39,7 @@ def main():
     parser.add_argument("--field", default="")
     parser.add_argument("--scale", type=float, default=1.0)
     parser.add_argument("--title", default="")
+    parser.add_argument("--cable-radius", type=float, default=0.006)
     args = parser.parse_args()
 
     solution = os.path.join(args.directory, "solution.pvd")
@@ -79,7 +81,7 @@ def main():
         moved.Vectors = ["POINTS", "displacement"]
         moved.ScaleFactor = args.scale
         tube = pv.Tube(Input=pv.ExtractSurface(Input=moved))
-        tube.Radius = 0.006
+        tube.Radius = args.cable_radius
         tube.NumberofSides = 12
         tubes = pv.Show(tube, view)
         tubes.ColorArrayName = [None, ""]

@@ -1,4 +1,4 @@
-# Shared by the scene scripts (scripts/waterbeam_bending.sh,
+# Shared by the scene scripts (scripts/airbeam_figure7.sh, scripts/waterbeam_bending.sh,
 # scripts/waterbeam_cables.sh, scripts/tensairity_beam.sh): source it after
 # setting root (the project) and out (the scene's output directory).
 
@@ -32,15 +32,20 @@ scene_run() {
 # installed (under xvfb-run without a display).
 scene_pictures() {
   if ! command -v pvbatch > /dev/null; then
-    echo "pvbatch not found: install paraview (and xvfb) for pictures of the deformed beams"
+    echo "pvbatch not found: scripts/install_dependencies.sh --pictures installs ParaView for pictures of the deformed beams"
     return
   fi
   local render=(pvbatch) name
   [ -z "${DISPLAY:-}" ] && command -v xvfb-run > /dev/null &&
     render=(xvfb-run -a -s "-screen 0 1920x1080x24" pvbatch)
   for name in "$@"; do
-    "${render[@]}" "$root/scripts/render_state.py" "$out/$name" "$out/$name.png" \
-      --title "$name, last converged state" 2>/dev/null | grep written ||
-      echo "$name: no picture (pvbatch failed)"
+    if "${render[@]}" "$root/scripts/render_state.py" "$out/$name" "$out/$name.png" \
+         --title "$name, last converged state" > "$out/$name.render.log" 2>&1; then
+      grep written "$out/$name.render.log"
+    else
+      echo "$name: no picture: $(grep -v '^$' "$out/$name.render.log" | tail -n 1)"
+      grep -q "No module named 'paraview'" "$out/$name.render.log" &&
+        echo "  (pvbatch needs python3-paraview: scripts/install_dependencies.sh --pictures)"
+    fi
   done
 }
