@@ -156,8 +156,12 @@ namespace
     unsigned int iterations = 0;
     for (const auto n : s.step_iterations)
       iterations += n;
+    // One decimal: the Q1 ring on a mesh line sits at 2377.375 N, and on
+    // 2 ranks under CPU load the second decimal moved in 2 of 10 runs
+    // (round-off that depends on timing, presumably MUMPS' dynamic
+    // scheduling; the checks below are unchanged).
     if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      std::printf("%s: %u/%u points in contact, total contact force %.2f N, "
+      std::printf("%s: %u/%u points in contact, total contact force %.1f N, "
                   "cutbacks %u\n",
                   name,
                   static_cast<unsigned int>(active),
