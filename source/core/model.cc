@@ -171,10 +171,7 @@ namespace pneuma
           rotation_norm += std::abs(modes[c][k]);
       }
     solver.set_constant_modes(translations);
-    bool symmetric = true;
-    for (const auto &s : subsystems)
-      symmetric = symmetric && s->symmetric_tangent();
-    solver.set_symmetric_possible(symmetric);
+    solver.set_symmetric_possible(symmetric_by_construction());
     if (solver.type() == "amg" && Utilities::MPI::sum(rotation_norm, comm) > 0.)
       solver.set_rigid_body_modes(modes);
     solver.reset();
@@ -627,13 +624,19 @@ namespace pneuma
     external = 0.;
     assemble_into(u, current_time, residual, &tangent, &external, coupling);
     // A subsystem's symmetry can change with its state (friction slip).
-    bool symmetric = true;
-    for (const auto &s : subsystems)
-      symmetric = symmetric && s->symmetric_tangent();
-    solver.set_symmetric_possible(symmetric);
+    solver.set_symmetric_possible(symmetric_by_construction());
     assembled_state    = u;
     assembled_time     = current_time;
     tangent_is_current = true;
+  }
+
+  bool
+  Model::symmetric_by_construction() const
+  {
+    for (const auto &s : subsystems)
+      if (!s->symmetric_tangent())
+        return false;
+    return true;
   }
 
   bool

@@ -73,7 +73,8 @@ namespace pneuma
         "Solver",
         solver,
         "automatic: Lanczos on MUMPS' LDL^T for a symmetric tangent, "
-        "Arnoldi on its LU where the tangent is not symmetric (friction); "
+        "Arnoldi on its LU where the tangent is not symmetric (measured, or "
+        "declared by friction in slip or a smoothed contact normal); "
         "symmetric or non-symmetric: that one (buckling is symmetric only). "
         "The non-symmetric solve gives the eigenvalues nearest the shift "
         "(real parts; complex pairs reported by their real part) without "
@@ -546,13 +547,17 @@ namespace pneuma
               "not in the span of their rows, or the combined border is not "
               "symmetric and negative semi-definite)");
           const double asym = asymmetry(K, owned);
-          const bool   non_symmetric =
+          // Also where a subsystem says so (a smoothed contact normal,
+          // friction in slip): the measure can miss a small, local part.
+          const bool declared = !model.symmetric_by_construction();
+          const bool non_symmetric =
             p.solver == "non-symmetric"
-            || (p.solver == "automatic" && asym > 1e-8);
-          if (p.type == "buckling" && asym > 1e-8)
+            || (p.solver == "automatic" && (asym > 1e-8 || declared));
+          if (p.type == "buckling" && (asym > 1e-8 || declared))
             throw std::runtime_error(
               "linear buckling needs a symmetric tangent; this one is not "
-              "(friction, or follower pressure on free edges)");
+              "(friction, follower pressure on free edges, or a smoothed "
+              "contact normal)");
           result.non_symmetric = non_symmetric;
           result.asymmetry     = asym;
 

@@ -181,12 +181,16 @@ namespace pneuma
       const LA::SparseMatrix &K = model.tangent_matrix();
 
       report.asymmetry = asymmetry(K, model.locally_owned());
+      // Not symmetric by construction (a smoothed contact normal, friction
+      // in slip): the measure can miss a small, local asymmetric part.
+      const bool non_symmetric =
+        report.asymmetry > round_off || !model.symmetric_by_construction();
 
       // Newton's last factorization, the LDL^T of the tangent at the
       // iterate before the last (vanishing) update, counts at no cost;
       // else (an LU, a shifted or older factorization) factorize here.
       Inertia    k;
-      const bool reuse = !exact && report.asymmetry <= round_off
+      const bool reuse = !exact && !non_symmetric
                          && model.newton_inertia(state, newton_reuse, k);
       if (!reuse)
         k = inertia.compute(K);
@@ -247,7 +251,7 @@ namespace pneuma
       // free edges): Sylvester's law does not apply; count the negative
       // real parts among the eigenvalues nearest zero (Arnoldi on the LU,
       // solvers/eigen_analysis.h).
-      if (report.asymmetry > round_off && report.note.empty())
+      if (non_symmetric && report.note.empty())
         {
           EigenParameters p;
           p.type              = "tangent";
@@ -262,8 +266,9 @@ namespace pneuma
                               e.values.end(),
                               [](const double v) { return v < 0.; });
               report.note =
-                "the tangent is not symmetric (friction, or follower "
-                "pressure on free edges): the count is that of the negative "
+                "the tangent is not symmetric (friction, follower pressure "
+                "on free edges, a smoothed contact normal): the count is "
+                "that of the negative "
                 "real parts among its "
                 + std::to_string(nearest_for_count)
                 + " eigenvalues nearest zero (Arnoldi)";

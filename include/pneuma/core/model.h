@@ -288,6 +288,12 @@ namespace pneuma
     bool
     tangent_is_at(const solvers::BorderedVector &u) const;
 
+    /// False if a subsystem says that its tangent, as last assembled, is
+    /// not symmetric by construction (Subsystem::symmetric_tangent(): a
+    /// smoothed contact normal, friction in slip); the same on every rank.
+    bool
+    symmetric_by_construction() const;
+
     /**
      * The inertia of Newton's last factorization if it is the LDL^T of the
      * unshifted tangent (Linear solver/direct/Factorization) at a field
