@@ -181,6 +181,7 @@ touch empty.prm
 check "empty.prm"                   1 "empty.prm: sets no parameter"
 check "$dir"                        1 "is a directory, not a parameter file"
 check "$k"                          1 "Contact/Pair 1/Membrane regions: the mesh has no cells in region 5" --set "Geometry/Type=disc" --set "Contact/Number of pairs=1" --set "Contact/Pair 1/Membrane regions=0, 5"
+check "$k"                          1 "Contact/Pair 1/Smoothed normal from: needs Master normal = smoothed" --set "Geometry/Type=disc" --set "Contact/Number of pairs=1" --set "Contact/Pair 1/Smoothed normal from=1"
 # Ill-posed scenes: free rigid-body motions, named before any work.
 check "$dir/valid.prm"              1 "Boundary conditions: the membrane is free to move as a rigid body (translation along x; translation along y; translation along z; rotation about x" --set "Boundary conditions/Fixed boundaries="
 check "$w"                          1 "the membrane is free to move as a rigid body (translation along y" --set "Geometry/gmsh/Mesh file=$dir/../../meshes/waterbeam.msh" --set "Boundary conditions/Fixed points=0,0,0: xyz"

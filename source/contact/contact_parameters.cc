@@ -68,6 +68,18 @@ namespace pneuma
             "normal (its tangent includes the nodal normals' dependence "
             "on the neighbouring cells); facet: each cell's own normal "
             "and closest point (cheaper; the normal jumps at cell edges).");
+          prm.add_parameter(
+            "Smoothed normal from",
+            p.smoothed_from,
+            "With Master normal = smoothed: the pseudo time after which the "
+            "smoothed normal is used; the load steps up to it use each "
+            "cell's facet normal (0: smoothed from the start). For a cable "
+            "pressed onto a flaccid wall through the inflation, where the "
+            "nodal normals of the crumpling wall make the smoothed contact "
+            "fail: facet normals until the wall is taut, smoothed after "
+            "(a step back across it by a cut-back uses the facet normal "
+            "again).",
+            Patterns::Double(0.));
           prm.add_parameter("Radius",
                             p.radius,
                             "Cable radius R in the gap [m] (0: the larger "
@@ -147,6 +159,9 @@ namespace pneuma
                loads::parse_id_list(t.regions, p.path + "/Membrane regions"))
             p.regions.insert(id);
           check_input(p.penalty > 0., p.path + "/Penalty", "must be > 0");
+          check_input(p.smoothed_from == 0. || p.smoothed_normal,
+                      p.path + "/Smoothed normal from",
+                      "needs Master normal = smoothed");
           check_input(!p.lobatto || p.points_per_element >= 2,
                       p.path + "/Points per element",
                       "Lobatto integration needs at least 2 points");

@@ -94,10 +94,14 @@ namespace pneuma
     }
 
     std::string
-    ContactSubsystem::begin_step(const double,
+    ContactSubsystem::begin_step(const double      time,
                                  const LA::Vector &field,
                                  bool             &grown)
     {
+      // Facet or smoothed normal for this step; turning smoothed brings
+      // the nodal normals' couplings into the pattern.
+      if (contact->set_time(time))
+        grown = true;
       // New candidates of the current state; the sparsity pattern grows if
       // they bring new couplings.
       TimerOutput::Scope t(model.timer(), "contact search");
@@ -117,9 +121,8 @@ namespace pneuma
     bool
     ContactSubsystem::symmetric_tangent() const
     {
-      for (const auto &p : parameters.all())
-        if (p.smoothed_normal)
-          return false;
+      if (contact->smoothed())
+        return false;
       // Coulomb slip, t = mu N t_trial/|t_trial|: the tangent of a slipping
       // point is not symmetric (Wriggers, ch. 5), however small its
       // asymmetric part measures.

@@ -181,8 +181,8 @@ namespace pneuma
               d.cell_reference.push_back(X);
               ++index;
             }
-          d.smoothed = p.smoothed_normal;
-          if (d.smoothed)
+          d.smoothed = p.smoothed_normal && p.smoothed_from <= 0.;
+          if (p.smoothed_normal)
             {
               std::vector<NormalCell> cells;
               for (const auto &m : neighbourhood)
@@ -670,6 +670,30 @@ namespace pneuma
           last_reports = std::move(saved_reports);
           master_force = std::move(saved_master_force);
         }
+    }
+
+    bool
+    ContactSystem::set_time(const double t)
+    {
+      bool turned = false;
+      for (unsigned int k = 0; k < pairs.size(); ++k)
+        {
+          const ContactPair &p = parameters.all()[k];
+          const bool         smoothed =
+            p.smoothed_normal && (p.smoothed_from <= 0. || t > p.smoothed_from);
+          turned            = turned || (smoothed && !pairs[k].smoothed);
+          pairs[k].smoothed = smoothed;
+        }
+      return turned;
+    }
+
+    bool
+    ContactSystem::smoothed() const
+    {
+      for (const auto &d : pairs)
+        if (d.smoothed)
+          return true;
+      return false;
     }
 
     bool

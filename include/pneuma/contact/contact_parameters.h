@@ -65,6 +65,10 @@ namespace pneuma
       /// interpolated from nodal-averaged normals, continuous across cell
       /// edges; false (facet) for each cell's own normal.
       bool smoothed_normal = false;
+      /// Entry "Smoothed normal from": with a smoothed master normal, the
+      /// pseudo time after which it is used; the steps up to it use the
+      /// facet normal (0: smoothed from the start).
+      double smoothed_from = 0.;
     };
 
     /// The "Contact" subsection.

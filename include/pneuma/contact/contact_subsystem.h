@@ -75,7 +75,7 @@ namespace pneuma
                      const LA::Vector &field) const override;
       void
       add_output_fields(const LA::Vector &field) override;
-      /// False with a smoothed master normal on any pair, or while a point
+      /// False while any pair uses the smoothed master normal, or while a point
       /// of a pair with friction slips (in the last assembly).
       bool
       symmetric_tangent() const override;

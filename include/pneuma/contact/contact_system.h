@@ -155,6 +155,20 @@ namespace pneuma
         return committed_reports.empty() ? last_reports : committed_reports;
       }
 
+      /**
+       * The master normal of the load step to pseudo time @p t: smoothed
+       * for the pairs with Master normal = smoothed whose Smoothed normal
+       * from is 0 or below @p t, facet otherwise. Returns true (on every
+       * rank) if a pair turned smoothed, whose couplings with the nodal
+       * normals' neighbours the sparsity pattern then needs.
+       */
+      bool
+      set_time(const double t);
+
+      /// True if a pair uses the smoothed master normal now.
+      bool
+      smoothed() const;
+
       /// True if a pair with friction had a slipping point in the last
       /// assembly (the same on every rank): its tangent is not symmetric.
       bool
