@@ -1,4 +1,5 @@
-# Shared by the scene scripts (scripts/airbeam_figure7.sh, scripts/waterbeam_bending.sh,
+# Shared by the scene scripts (scripts/airbeam_figure7.sh,
+# scripts/waterbeam_filling.sh, scripts/waterbeam_bending.sh,
 # scripts/waterbeam_cables.sh, scripts/tensairity_beam.sh): source it after
 # setting root (the project) and out (the scene's output directory).
 

@@ -8,7 +8,8 @@
 #           water (pressure-regulated, as when a waterbeam is pumped up);
 #           chamber 1 stays sealed and feels the heavier, larger tube.
 # Writes output/waterbeam_filling/{gas,water}/ and the plot
-# output/waterbeam_filling/chambers.png (scripts/plot_chambers.py).
+# output/waterbeam_filling/chambers.png (scripts/plot_chambers.py), and
+# gas.png, water.png, the filled states, where ParaView is installed.
 # Extra arguments are passed to pneuma (e.g. --set "Geometry/Mesh file=...").
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -29,3 +30,5 @@ common=(--set "Load stepping/Stage end times=1, 2"
   --set "Output/Directory=$out/water" "$@" | tee "$out/water.log" | grep -E "^(Step|pneuma)"
 /usr/bin/python3 "$root/scripts/plot_chambers.py" "$out/gas" "$out/water" -o "$out/chambers.png"
 echo "written: $out/gas, $out/water, $out/chambers.png"
+source "$root/scripts/scene_tools.sh"
+scene_pictures gas water
