@@ -211,8 +211,14 @@ namespace pneuma
           std::map<types::global_dof_index, bool> dofs;
           for (const auto g : group)
             dofs[records[g].dof] = dofs[records[g].dof] || records[g].rigid;
-          if (dofs.size() < 2)
-            continue;
+          // Every point of a junction face has a copy on another fan; one
+          // without would be a tear (copies refined differently).
+          AssertThrow(dofs.size() >= 2,
+                      ExcMessage("a junction point at "
+                                 + std::to_string(records[a].x[0]) + ", "
+                                 + std::to_string(records[a].x[1]) + ", "
+                                 + std::to_string(records[a].x[2])
+                                 + " has no copy to be tied to"));
           auto master = dofs.begin();
           for (auto it = dofs.begin(); it != dofs.end(); ++it)
             if (it->second)

@@ -448,13 +448,6 @@ namespace pneuma
             }
         throw_if_any(comm, error);
       }
-      // Junction copies are tied vertex by vertex: both sides of a junction
-      // would have to be refined alike.
-      check_input(adaptive.cycles() == 0 || junction_ties.ties.empty(),
-                  "Adaptive refinement/Cycles",
-                  "meshes with junction lines (more than two cells on a "
-                  "line) cannot be refined adaptively yet; refine the Gmsh "
-                  "mesh instead");
     }
 
     Point<3>

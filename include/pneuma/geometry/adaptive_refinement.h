@@ -46,6 +46,15 @@ namespace pneuma
        * Mark the cells by Kelly's indicator of the displacement
        * @p displacement (ghosted) and refine (and coarsen) the fixed
        * fractions of them.
+       *
+       * On a mesh with junction lines (geometry/junctions.h) every copy of
+       * a junction edge is refined alike, so that the new vertices on it
+       * exist on every side and are tied again: a refine flag on a cell at
+       * a junction is given to the cells of the other copies of that edge,
+       * cells at a junction are not coarsened, and after the refinement
+       * (whose 2:1 balance may refine one side only) a cell whose junction
+       * edge is coarser than another copy of it is refined until all
+       * copies agree.
        */
       void
       refine(const Mapping<2, 3>                        &mapping,
