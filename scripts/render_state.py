@@ -68,8 +68,11 @@ def main():
     shown.SetScalarBarVisibility(view, True)
     lut = pv.GetColorTransferFunction(field)
     if field == "wrinkling_state":
-        # 0 taut, 1 wrinkled, 2 slack.
-        lut.RescaleTransferFunction(0.0, 2.0)
+        # Categories: 0 taut, 1 wrinkled, 2 slack.
+        lut.InterpretValuesAsCategories = 1
+        lut.Annotations = ["0", "taut", "1", "wrinkled", "2", "slack"]
+        lut.IndexedColors = [0.23, 0.30, 0.75, 0.87, 0.87, 0.87,
+                             0.71, 0.02, 0.15]
     bar = pv.GetScalarBar(lut, view)
     bar.Title = field
     bar.ComponentTitle = ""
