@@ -20,6 +20,15 @@ namespace pneuma
   {
     namespace
     {
+      /// Whether pair @p p measures its gap along the smoothed normal in
+      /// the load step to pseudo time @p t (Smoothed normal from).
+      bool
+      smoothed_at(const ContactPair &p, const double t)
+      {
+        return p.smoothed_normal
+               && (p.smoothed_from <= 0. || t > p.smoothed_from);
+      }
+
       /**
        * The masters whose boxes in @p tree (ContactSystem::master_boxes)
        * touch the box of the cable element @p x0 - @p x1 enlarged by
@@ -181,7 +190,7 @@ namespace pneuma
               d.cell_reference.push_back(X);
               ++index;
             }
-          d.smoothed = p.smoothed_normal && p.smoothed_from <= 0.;
+          d.smoothed = smoothed_at(p, 0.);
           if (p.smoothed_normal)
             {
               std::vector<NormalCell> cells;
@@ -678,11 +687,9 @@ namespace pneuma
       bool turned = false;
       for (unsigned int k = 0; k < pairs.size(); ++k)
         {
-          const ContactPair &p = parameters.all()[k];
-          const bool         smoothed =
-            p.smoothed_normal && (p.smoothed_from <= 0. || t > p.smoothed_from);
-          turned            = turned || (smoothed && !pairs[k].smoothed);
-          pairs[k].smoothed = smoothed;
+          const bool smoothed = smoothed_at(parameters.all()[k], t);
+          turned              = turned || (smoothed && !pairs[k].smoothed);
+          pairs[k].smoothed   = smoothed;
         }
       return turned;
     }
