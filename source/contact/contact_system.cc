@@ -1,4 +1,5 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/parallel.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/numerics/rtree.h>
@@ -481,8 +482,6 @@ namespace pneuma
           std::fill(d.seen_master.begin(), d.seen_master.end(), -1);
           Vector<double>                       f_residual;
           FullMatrix<double>                   f_jacobian;
-          Vector<double>                       gradient;
-          FullMatrix<double>                   hessian;
           std::vector<types::global_dof_index> dofs;
           // Smoothed normals: the chain from the variables to the dofs
           // (P, rows per variable) and the chained local terms: the
@@ -522,26 +521,66 @@ namespace pneuma
             LA::distribute(
               constraints, chained_matrix, chained, dofs, tangent, residual);
           };
+          // Whether point q is assembled here (its nearest projection is
+          // on this rank), and its gap there.
+          const auto held = [&](const unsigned int q) {
+            return global[q].rank == rank
+                   && best[q].distance != std::numeric_limits<double>::max();
+          };
+          const auto point_gap = [&](const unsigned int q) {
+            const CablePoint &pt   = d.points[q];
+            const Projection &proj = best_projection[q];
+            if (!d.beam)
+              return proj.gap;
+            // The section's extent along n instead of R.
+            const SlaveSection &sc = sections[pt.cable_cell];
+            const Tensor<1, 3>  a1 =
+              (1. - pt.eta) * sc.a1[0] + pt.eta * sc.a1[1];
+            const Tensor<1, 3> a2 =
+              (1. - pt.eta) * sc.a2[0] + pt.eta * sc.a2[1];
+            return proj.gap + d.radius
+                   - std::hypot(a1 * proj.normal, a2 * proj.normal);
+          };
+          // The penalty terms of the penetrating points, on the task
+          // threads: each point's automatic differentiation is independent
+          // of the others' (the patches in use were all made by the search
+          // above). They are added to the system in point order below, so
+          // the sums do not depend on the thread count.
+          std::vector<unsigned int> penetrating;
+          for (unsigned int q = 0; q < n_points; ++q)
+            if (held(q) && !(point_gap(q) >= 0.))
+              penetrating.push_back(q);
+          std::vector<Vector<double>>     gradients(n_points);
+          std::vector<FullMatrix<double>> hessians(n_points);
+          parallel::apply_to_subranges(
+            0u,
+            static_cast<unsigned int>(penetrating.size()),
+            [&](const unsigned int begin, const unsigned int end) {
+              for (unsigned int i = begin; i < end; ++i)
+                {
+                  const unsigned int q  = penetrating[i];
+                  const CablePoint  &pt = d.points[q];
+                  penalty_terms(patches[best_master[q]],
+                                slave[pt.cable_cell],
+                                pt.eta,
+                                d.radius,
+                                p.penalty,
+                                pt.weight,
+                                best_projection[q].xi,
+                                &gradients[q],
+                                tangent ? &hessians[q] : nullptr,
+                                d.beam ? &sections[pt.cable_cell] : nullptr);
+                }
+            },
+            8);
           for (unsigned int q = 0; q < n_points; ++q)
             {
-              if (global[q].rank != rank
-                  || best[q].distance == std::numeric_limits<double>::max())
+              if (!held(q))
                 continue;
+              const double       gap  = point_gap(q);
               const CablePoint  &pt   = d.points[q];
               const unsigned int m    = best_master[q];
               const Projection  &proj = best_projection[q];
-              double             gap  = proj.gap;
-              if (d.beam)
-                {
-                  // The section's extent along n instead of R.
-                  const SlaveSection &sc = sections[pt.cable_cell];
-                  const Tensor<1, 3>  a1 =
-                    (1. - pt.eta) * sc.a1[0] + pt.eta * sc.a1[1];
-                  const Tensor<1, 3> a2 =
-                    (1. - pt.eta) * sc.a2[0] + pt.eta * sc.a2[1];
-                  gap +=
-                    d.radius - std::hypot(a1 * proj.normal, a2 * proj.normal);
-                }
               if (gap < d.search)
                 {
                   // Near: the reference of the next step's check.
@@ -553,16 +592,8 @@ namespace pneuma
                 }
               if (gap >= 0.)
                 continue;
-              penalty_terms(patches[m],
-                            slave[pt.cable_cell],
-                            pt.eta,
-                            d.radius,
-                            p.penalty,
-                            pt.weight,
-                            proj.xi,
-                            &gradient,
-                            tangent ? &hessian : nullptr,
-                            d.beam ? &sections[pt.cable_cell] : nullptr);
+              const Vector<double>     &gradient = gradients[q];
+              const FullMatrix<double> &hessian  = hessians[q];
               variable_map(d,
                            pt.cable_cell,
                            masters[m],
