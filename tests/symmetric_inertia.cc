@@ -12,7 +12,12 @@
 //   indefinite shifted Laplacian and of the saddle point, distributed
 //   vectors gathered to MUMPS and back, against the LU of Amesos_Mumps
 //   (residuals and the difference of the two solutions); "automatic"
-//   picks LDLT for these and LU for a non-symmetric matrix.
+//   picks LDLT for these and LU for a non-symmetric matrix;
+// - the Ordering entry reaches the LDL^T (AMD and METIS give factors of
+//   different sizes for a 2D Laplacian, and both solve it);
+// - factorization reuse, LDL^T and LU: a nearby matrix solved by GMRES on
+//   the earlier factors (no new factorization), a far one factorized
+//   afresh in the same kind.
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -24,6 +29,7 @@
 
 #include "test_tools.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
@@ -234,5 +240,116 @@ main(int argc, char **argv)
                   small ? "<" : ">=",
                   pass ? "PASS" : "FAIL");
   }
+  // The ordering entry reaches the LDL^T: the factors of a 2D Laplacian
+  // (40 x 40 grid, 5-point stencil, shifted indefinite) differ in size
+  // between AMD and METIS, and both solve it.
+  {
+    const global_dof_index m    = 40;
+    const auto             grid = make_matrix(m * m, [&](global_dof_index i) {
+      std::vector<std::pair<global_dof_index, double>> e;
+      const global_dof_index                           a = i % m, c = i / m;
+      if (a > 0)
+        e.emplace_back(i - 1, -1.);
+      if (c > 0)
+        e.emplace_back(i - m, -1.);
+      e.emplace_back(i, 4. - 0.3);
+      if (a + 1 < m)
+        e.emplace_back(i + 1, -1.);
+      if (c + 1 < m)
+        e.emplace_back(i + m, -1.);
+      return e;
+    });
+    pneuma::LA::Vector b(grid.locally_owned_range_indices(), MPI_COMM_WORLD);
+    b                      = 1.;
+    double      entries[2] = {0., 0.}, residuals[2] = {0., 0.};
+    const char *orderings[2] = {"amd", "metis"};
+    for (unsigned int k = 0; k < 2; ++k)
+      {
+        pneuma::solvers::LinearSolver solver;
+        dealii::ParameterHandler      prm;
+        solver.declare_parameters(prm);
+        prm.parse_input_from_string(
+          std::string("subsection Linear solver\n subsection direct\n  set "
+                      "Factorization = LDLT\n  set Ordering = ")
+          + orderings[k] + "\n end\nend\n");
+        pneuma::LA::Vector x(b), r(b);
+        solver.factorize(grid);
+        solver.solve(grid, x, b);
+        grid.vmult(r, x);
+        r -= b;
+        residuals[k] = r.l2_norm() / b.l2_norm();
+        entries[k]   = solver.factor_entries();
+      }
+    const bool pass =
+      entries[0] != entries[1] && residuals[0] < 1e-12 && residuals[1] < 1e-12;
+    ok &= pass;
+    if (root)
+      std::printf("ordering: LDL^T factor entries amd %.0f, metis %.0f "
+                  "(differ: %s), residuals < 1e-12: %s %s\n",
+                  entries[0],
+                  entries[1],
+                  entries[0] != entries[1] ? "yes" : "no",
+                  residuals[0] < 1e-12 && residuals[1] < 1e-12 ? "yes" : "no",
+                  pass ? "PASS" : "FAIL");
+  }
+
+  // Factorization reuse (direct/Reuse factorization): the tangent's values
+  // change in place; GMRES on the earlier factors solves a nearby matrix,
+  // and a far one, which GMRES cannot solve in 'Reuse iterations', is
+  // factorized afresh, LDL^T or LU as the earlier factors were.
+  for (const std::string factorization : {"automatic", "LU"})
+    {
+      pneuma::solvers::LinearSolver solver;
+      dealii::ParameterHandler      prm;
+      solver.declare_parameters(prm);
+      prm.parse_input_from_string(
+        "subsection Linear solver\n subsection direct\n  set Factorization = "
+        + factorization
+        + "\n  set Reuse factorization = true\n  set Reuse iterations = 4\n"
+          "  set Reuse tolerance = 1e-13\n end\nend\n");
+      pneuma::LA::SparseMatrix A;
+      A.reinit(shifted);
+      A.copy_from(shifted);
+      pneuma::LA::Vector b(A.locally_owned_range_indices(), MPI_COMM_WORLD);
+      for (const auto i : b.locally_owned_elements())
+        b[i] = std::cos(0.21 * i);
+      b.compress(dealii::VectorOperation::insert);
+      pneuma::LA::Vector x(b), r(b);
+      // |A x - b| / |b| after factorize + solve with the diagonal at d.
+      const auto residual_at = [&](const double d) {
+        for (const auto i : A.locally_owned_range_indices())
+          A.set(i, i, d);
+        A.compress(dealii::VectorOperation::insert);
+        solver.factorize(A);
+        x = 0.;
+        solver.solve(A, x, b);
+        A.vmult(r, x);
+        r -= b;
+        return r.l2_norm() / b.l2_norm();
+      };
+      const double       r1   = residual_at(2. - 1.7);
+      const double       r2   = residual_at(2. - 1.7 + 1e-6);
+      const unsigned int f2   = solver.n_factorizations(),
+                         k2   = solver.n_krylov_iterations();
+      const double       r3   = residual_at(2. - 0.5);
+      const unsigned int f3   = solver.n_factorizations();
+      const std::string  kind = solver.factorization();
+      const bool pass = r1 < 1e-12 && r2 < 1e-12 && r3 < 1e-12 && f2 == 1
+                        && k2 > 0 && f3 == 2
+                        && kind == (factorization == "LU" ? "LU" : "LDLT");
+      ok &= pass;
+      if (root)
+        std::printf("reuse (%s): residuals %s 1e-12; nearby matrix on the "
+                    "earlier factors: factorizations %u (reference 1), GMRES "
+                    "iterations %s; far matrix: factorizations %u (reference "
+                    "2), %s %s\n",
+                    factorization.c_str(),
+                    std::max({r1, r2, r3}) < 1e-12 ? "<" : ">=",
+                    f2,
+                    k2 > 0 ? "> 0" : "0",
+                    f3,
+                    kind.c_str(),
+                    pass ? "PASS" : "FAIL");
+    }
   return ok ? 0 : 1;
 }

@@ -20,6 +20,23 @@ namespace pneuma
 {
   namespace solvers
   {
+    namespace
+    {
+      /// MUMPS' ICNTL(7) value of an "Ordering" entry.
+      int
+      icntl7(const std::string &ordering)
+      {
+        static const std::map<std::string, int> values = {{"amd", 0},
+                                                          {"amf", 2},
+                                                          {"scotch", 3},
+                                                          {"pord", 4},
+                                                          {"metis", 5},
+                                                          {"qamd", 6},
+                                                          {"auto", 7}};
+        return values.at(ordering);
+      }
+    } // namespace
+
     void
     LinearSolver::declare_parameters(ParameterHandler &prm)
     {
@@ -129,8 +146,11 @@ namespace pneuma
     LinearSolver::symmetric_factorization(const LA::SparseMatrix &A)
     {
       if (!symmetric)
-        symmetric =
-          std::make_unique<SymmetricInertia>(A.get_mpi_communicator(), 0.);
+        {
+          symmetric =
+            std::make_unique<SymmetricInertia>(A.get_mpi_communicator(), 0.);
+          symmetric->set_ordering(icntl7(direct_settings.ordering));
+        }
       try
         {
           symmetric->compute(A);
@@ -222,16 +242,7 @@ namespace pneuma
               amesos_parameters.set("PrintStatus", false);
               direct->SetParameters(amesos_parameters);
               if (auto *mumps = dynamic_cast<Amesos_Mumps *>(direct.get()))
-                {
-                  const std::map<std::string, int> icntl7 = {{"amd", 0},
-                                                             {"amf", 2},
-                                                             {"scotch", 3},
-                                                             {"pord", 4},
-                                                             {"metis", 5},
-                                                             {"qamd", 6},
-                                                             {"auto", 7}};
-                  mumps->SetICNTL(7, icntl7.at(direct_settings.ordering));
-                }
+                mumps->SetICNTL(7, icntl7(direct_settings.ordering));
               AssertThrow(direct->SymbolicFactorization() == 0,
                           ExcMessage("symbolic factorization failed"));
               factored_matrix = &A.trilinos_matrix();
@@ -371,8 +382,12 @@ namespace pneuma
                 }
               catch (const SolverControl::NoConvergence &)
                 {
-                  // The tangent has moved too far: factorize it.
-                  numeric_factorization();
+                  // The tangent has moved too far: factorize it (LDL^T
+                  // or LU, as the earlier factors were).
+                  if (use_symmetric)
+                    symmetric_factorization(A);
+                  else
+                    numeric_factorization();
                 }
             }
           direct_solve(x, b);

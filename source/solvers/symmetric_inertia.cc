@@ -64,6 +64,14 @@ namespace pneuma
       }
     };
 
+    void
+    SymmetricInertia::set_ordering(const int icntl7)
+    {
+      if (data->id.icntl[6] != icntl7)
+        data->analysed = false;
+      data->id.icntl[6] = icntl7;
+    }
+
     double
     mumps_count(const int infog)
     {

@@ -102,6 +102,11 @@ namespace pneuma
         return last_inertia;
       }
 
+      /// MUMPS' fill-reducing ordering, ICNTL(7) (default 2, approximate
+      /// minimum fill), for the analyses from the next compute() on.
+      void
+      set_ordering(const int icntl7);
+
       /// Entries of the factors (INFOG(29)) and floating-point operations
       /// of the last factorization (RINFOG(3)).
       double
