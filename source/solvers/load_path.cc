@@ -697,6 +697,23 @@ namespace pneuma
                   factor *= s;
                   problem.set_size(size);
                 }
+              // Under displacement control the monitor's increment is
+              // prescribed: a step that would pass the target ends on it
+              // (under arc-length control only the solved step tells).
+              if (control == Control::displacement && has_target
+                  && forced == Forced::none && stage + 1 == stepping.n_stages())
+                {
+                  const double rest = target - monitor(result.state.field);
+                  if (size * rest > 0. && std::abs(size) >= std::abs(rest))
+                    {
+                      const double s = rest / size;
+                      dt *= s;
+                      factor *= s;
+                      size   = rest;
+                      forced = Forced::to_target;
+                      problem.set_size(size);
+                    }
+                }
               x = x_last;
               x.add(factor, direction);
               predictor = x;
