@@ -527,29 +527,34 @@ namespace pneuma
             return global[q].rank == rank
                    && best[q].distance != std::numeric_limits<double>::max();
           };
-          const auto point_gap = [&](const unsigned int q) {
-            const CablePoint &pt   = d.points[q];
-            const Projection &proj = best_projection[q];
-            if (!d.beam)
-              return proj.gap;
-            // The section's extent along n instead of R.
-            const SlaveSection &sc = sections[pt.cable_cell];
-            const Tensor<1, 3>  a1 =
-              (1. - pt.eta) * sc.a1[0] + pt.eta * sc.a1[1];
-            const Tensor<1, 3> a2 =
-              (1. - pt.eta) * sc.a2[0] + pt.eta * sc.a2[1];
-            return proj.gap + d.radius
-                   - std::hypot(a1 * proj.normal, a2 * proj.normal);
-          };
+          std::vector<double>       gaps(n_points, 0.);
+          std::vector<unsigned int> penetrating;
+          for (unsigned int q = 0; q < n_points; ++q)
+            {
+              if (!held(q))
+                continue;
+              const CablePoint &pt   = d.points[q];
+              const Projection &proj = best_projection[q];
+              gaps[q]                = proj.gap;
+              if (d.beam)
+                {
+                  // The section's extent along n instead of R.
+                  const SlaveSection &sc = sections[pt.cable_cell];
+                  const Tensor<1, 3>  a1 =
+                    (1. - pt.eta) * sc.a1[0] + pt.eta * sc.a1[1];
+                  const Tensor<1, 3> a2 =
+                    (1. - pt.eta) * sc.a2[0] + pt.eta * sc.a2[1];
+                  gaps[q] +=
+                    d.radius - std::hypot(a1 * proj.normal, a2 * proj.normal);
+                }
+              if (!(gaps[q] >= 0.))
+                penetrating.push_back(q);
+            }
           // The penalty terms of the penetrating points, on the task
           // threads: each point's automatic differentiation is independent
           // of the others' (the patches in use were all made by the search
           // above). They are added to the system in point order below, so
           // the sums do not depend on the thread count.
-          std::vector<unsigned int> penetrating;
-          for (unsigned int q = 0; q < n_points; ++q)
-            if (held(q) && !(point_gap(q) >= 0.))
-              penetrating.push_back(q);
           std::vector<Vector<double>>     gradients(n_points);
           std::vector<FullMatrix<double>> hessians(n_points);
           parallel::apply_to_subranges(
@@ -577,7 +582,7 @@ namespace pneuma
             {
               if (!held(q))
                 continue;
-              const double       gap  = point_gap(q);
+              const double       gap  = gaps[q];
               const CablePoint  &pt   = d.points[q];
               const unsigned int m    = best_master[q];
               const Projection  &proj = best_projection[q];

@@ -687,16 +687,15 @@ namespace pneuma
               // small).
               const double dtau_predicted =
                 factor * PathConstraintProblem::load_factor(direction);
+              const auto shorten = [&](const double s) {
+                dt *= s;
+                size *= s;
+                factor *= s;
+                problem.set_size(size);
+              };
               if (forced != Forced::to_target
                   && std::abs(dtau_predicted) > stepping.maximum())
-                {
-                  const double s =
-                    stepping.maximum() / std::abs(dtau_predicted);
-                  dt *= s;
-                  size *= s;
-                  factor *= s;
-                  problem.set_size(size);
-                }
+                shorten(stepping.maximum() / std::abs(dtau_predicted));
               // Under displacement control the monitor's increment is
               // prescribed: a step that would pass the target ends on it
               // (under arc-length control only the solved step tells).
@@ -706,9 +705,7 @@ namespace pneuma
                   const double rest = target - monitor(result.state.field);
                   if (size * rest > 0. && std::abs(size) >= std::abs(rest))
                     {
-                      const double s = rest / size;
-                      dt *= s;
-                      factor *= s;
+                      shorten(rest / size);
                       size   = rest;
                       forced = Forced::to_target;
                       problem.set_size(size);
