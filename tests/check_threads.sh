@@ -1,6 +1,8 @@
 #!/bin/bash
 # The membrane's cell loop on several threads (deal.II's WorkStream, with
-# the chambers' wall terms in it; core/threads.h): one rank with 1 and with
+# the chambers' wall terms in it; core/threads.h), and the contact points'
+# penalty terms (tensairity_scene: two cable pairs, 240 points in contact,
+# added in point order after the threads): one rank with 1 and with
 # 2 threads ends with the same summary.json (every number to 1e-9
 # relative). The sums over cells are formed in cell order on any number of
 # threads; what differs is deal.II's FEValues shortcut for translated cells
