@@ -241,6 +241,8 @@ NP=3 check_mpi "$dir/valid.prm"     1 "Geometry/Global refinements: 12 refinemen
 # Path following (Load stepping/Control and Path following).
 check "$dir/valid.prm"              1 "Load stepping/Control: needs one entry, or one per stage" --set "Load stepping/Control=load, arc-length"
 check "$dir/valid.prm"              1 "Load stepping/Control: The string <riks> does not match" --set "Load stepping/Control=riks"
+check "$dir/valid.prm"              1 "Load stepping/Maximum increment: needs one value, or one per stage (1 stages in Stage end times), not 2" --set "Load stepping/Maximum increment=0.5, 0.25"
+check "$dir/valid.prm"              1 "Load stepping/Maximum increment: must be >= Minimum increment in every stage" --set "Load stepping/Stage end times=1, 2" --set "Load stepping/Maximum increment=0.5, 1e-6"
 check "$dir/valid.prm"              1 "Load stepping/Path following/Target monitor value: must be a finite number or empty, not 'far'" --set "Load stepping/Control=arc-length" --set "Load stepping/Path following/Target monitor value=far"
 check "$dir/valid.prm"              1 "Target monitor value: applies to the last stage, which is under load control" --set "Load stepping/Path following/Target monitor value=0.01"
 check "$dir/valid.prm"              1 "Load stepping/Path following/Monitor point: displacement control needs a monitor point" --set "Load stepping/Control=displacement"

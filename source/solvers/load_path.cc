@@ -397,7 +397,7 @@ namespace pneuma
     {
       PathResult result;
       double     t  = 0.;
-      double     dt = stepping.initial();
+      double     dt = stepping.initial(0);
       // Bergan's current stiffness parameter, per stage.
       double       stiffness_reference = 0., stiffness = 1.;
       unsigned int stiffness_stage = numbers::invalid_unsigned_int;
@@ -581,7 +581,7 @@ namespace pneuma
               current.limit_since_return = false;
               current.secant             = false;
               forced                     = Forced::none;
-              dt                         = stepping.initial();
+              dt                         = stepping.initial(stage);
               out << "Stage " << stage + 1 << " under "
                   << control_names[controls.size() == 1 ? 0 : stage]
                   << " control: |du/dt| = " << current.u_scale
@@ -694,8 +694,8 @@ namespace pneuma
                 problem.set_size(size);
               };
               if (forced != Forced::to_target
-                  && std::abs(dtau_predicted) > stepping.maximum())
-                shorten(stepping.maximum() / std::abs(dtau_predicted));
+                  && std::abs(dtau_predicted) > stepping.maximum(stage))
+                shorten(stepping.maximum(stage) / std::abs(dtau_predicted));
               // Under displacement control the monitor's increment is
               // prescribed: a step that would pass the target ends on it
               // (under arc-length control only the solved step tells).
@@ -1036,8 +1036,10 @@ namespace pneuma
               << newton.convergence_test << "), wall " << std::fixed
               << std::setprecision(2) << wall_clock.wall_time() << " s"
               << std::defaultfloat << std::setprecision(6) << std::endl;
-          dt = path_step ? stepping.grown(dt, newton.iterations, false)
-                         : stepping.grown(t_new - t_old, newton.iterations);
+          dt =
+            path_step
+              ? stepping.grown(dt, newton.iterations, false, t_new)
+              : stepping.grown(t_new - t_old, newton.iterations, true, t_new);
           PathStep report{result.steps,
                           t_new,
                           newton.iterations,
@@ -1056,7 +1058,7 @@ namespace pneuma
                 {
                   current.path_active = false;
                   current.secant      = false;
-                  dt                  = stepping.initial();
+                  dt = stepping.initial(stepping.stage_of(t_new));
                 }
               else if (reached == Forced::to_target)
                 {

@@ -29,11 +29,14 @@ namespace pneuma
                         Patterns::Double(0.));
       prm.add_parameter(
         "Maximum increment",
-        maximum_increment,
-        "Largest pseudo-time increment; > 0. In a path-controlled "
-        "stage: the largest change of the load factor per "
-        "step (the arc length grows freely).",
-        Patterns::Double(0.));
+        maximum_increments,
+        "Largest pseudo-time increment; > 0. One value for all stages, "
+        "or one per stage (e.g. large steps through a filling that "
+        "converges easily, smaller ones where a curve is wanted). In a "
+        "path-controlled stage: the largest change of the load factor "
+        "per step (the arc length grows freely). A stage starts with at "
+        "most its maximum.",
+        Patterns::List(Patterns::Double(0.), 1));
       prm.add_parameter("Growth factor",
                         growth_factor,
                         "Increment growth after an easy step.",
@@ -67,9 +70,21 @@ namespace pneuma
                     && minimum_increment <= initial_increment,
                   p + "Minimum increment",
                   "must be > 0 and <= Initial increment");
-      check_input(maximum_increment >= initial_increment,
+      check_input(maximum_increments.size() == 1
+                    || maximum_increments.size() == stage_ends.size(),
                   p + "Maximum increment",
-                  "must be >= Initial increment");
+                  "needs one value, or one per stage ("
+                    + std::to_string(stage_ends.size())
+                    + " stages in Stage end times), not "
+                    + std::to_string(maximum_increments.size()));
+      check_input(maximum_increments.front() >= initial_increment,
+                  p + "Maximum increment",
+                  "must be >= Initial increment (the first stage's)");
+      check_input(*std::min_element(maximum_increments.begin(),
+                                    maximum_increments.end())
+                    >= minimum_increment,
+                  p + "Maximum increment",
+                  "must be >= Minimum increment in every stage");
     }
 
     unsigned int
@@ -96,12 +111,12 @@ namespace pneuma
     double
     LoadStepping::grown(const double       dt,
                         const unsigned int iterations,
-                        const bool         capped) const
+                        const bool         capped,
+                        const double       t) const
     {
-      if (iterations > easy_iterations)
-        return dt;
-      return capped ? std::min(dt * growth_factor, maximum_increment)
-                    : dt * growth_factor;
+      const double next =
+        iterations > easy_iterations ? dt : dt * growth_factor;
+      return capped ? std::min(next, maximum(stage_of(t))) : next;
     }
 
     bool

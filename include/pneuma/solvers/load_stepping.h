@@ -11,6 +11,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace pneuma
@@ -63,30 +64,39 @@ namespace pneuma
       /// Increment after a converged step with @p iterations (at most
       /// the maximum increment if @p capped: a path-controlled stage caps
       /// the load factor's change instead, not its arc length).
+      /// The increment after a step of @p dt that took @p iterations
+      /// Newton iterations: grown after an easy step, and if @p capped,
+      /// at most the maximum of the stage that follows time @p t.
       double
       grown(const double       dt,
             const unsigned int iterations,
-            const bool         capped = true) const;
+            const bool         capped,
+            const double       t) const;
       /// Increment after a failed step.
       double
       cut(const double dt) const
       {
         return dt * cut_back_factor;
       }
+      /// The first increment of stage @p stage: Initial increment, at most
+      /// the stage's maximum.
       double
-      initial() const
+      initial(const unsigned int stage) const
       {
-        return initial_increment;
+        return std::min(initial_increment, maximum(stage));
       }
       double
       minimum() const
       {
         return minimum_increment;
       }
+      /// The largest increment of stage @p stage (Maximum increment: one
+      /// value for all stages or one per stage).
       double
-      maximum() const
+      maximum(const unsigned int stage) const
       {
-        return maximum_increment;
+        return maximum_increments.size() == 1 ? maximum_increments.front()
+                                              : maximum_increments[stage];
       }
       /// True if @p t is (numerically) at or beyond the end.
       bool
@@ -94,8 +104,9 @@ namespace pneuma
 
     private:
       std::vector<double> stage_ends{1.};
+      std::vector<double> maximum_increments{1.};
       double              initial_increment = 0.25, minimum_increment = 1e-4,
-             maximum_increment = 1., growth_factor = 1.5, cut_back_factor = 0.5;
+             growth_factor = 1.5, cut_back_factor = 0.5;
       unsigned int easy_iterations = 5;
     };
   } // namespace solvers
