@@ -20,7 +20,13 @@ out=output/waterbeam_cables
 mkdir -p "$out"
 source "$root/scripts/scene_tools.sh"
 scene_run cables parameter_files/waterbeam_cables.prm "$@"
-scene_run no_cables parameter_files/waterbeam_bending.prm "${waterbeam_water[@]}" "$@"
+# The walls smoothed as in the cables scene, so that only the cables differ.
+smoothing=()
+for r in 0 1 2 3; do
+  smoothing+=(--set "Materials/Region $r/Wrinkling smoothing=1e-4")
+done
+scene_run no_cables parameter_files/waterbeam_bending.prm "${waterbeam_water[@]}" \
+  "${smoothing[@]}" "$@"
 /usr/bin/python3 "$root/scripts/plot_bending.py" --out "$out/bending" \
   --title "Waterbeam, chamber 2 water-filled, with and without the spiral cables" \
   "with the cables:$out/cables:2:4:1" "without cables:$out/no_cables:2:4:1"
