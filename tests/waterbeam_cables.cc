@@ -39,6 +39,7 @@ main(int argc, char **argv)
        {"Cables/Cable 2/Density", "0"},
        {"Load stepping/Stage end times", "1, 2"},
        {"Load stepping/Control", "load, load"},
+       {"Load stepping/Maximum increment", "0.25"},
        {"Load stepping/Path following/Target monitor value", ""}},
       std::string(PNEUMA_SOURCE_DIR) + "/parameter_files/waterbeam_cables.prm")
       ->run();
@@ -83,6 +84,20 @@ main(int argc, char **argv)
   report("reactions + applied load = 0 in x, y, z (1e-8 of the vertical "
          "load)",
          balanced);
+  // The same at every converged state, from history.csv's columns (the
+  // force a load-deflection curve plots, scripts/plot_bending.py).
+  bool steps_balanced = s.history.size() > 2;
+  for (unsigned int k = 1; k < s.history.size(); ++k)
+    for (const char *c : {"_x", "_y", "_z"})
+      steps_balanced =
+        steps_balanced
+        && std::abs(s.history[k].get(std::string("reaction") + c)
+                    + s.history[k].get(std::string("applied_load") + c))
+             <= 1e-8 * std::abs(applied[2]);
+  report("reactions + applied load = 0 at each of the "
+           + std::to_string(s.history.size() - 1)
+           + " converged states (history)",
+         steps_balanced);
   ok = pneuma_test::check("liquid volume in chamber 2 [m^3]",
                           s.get("c3_liquid_volume"),
                           0.005,
