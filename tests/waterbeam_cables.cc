@@ -39,7 +39,7 @@ main(int argc, char **argv)
        {"Cables/Cable 2/Density", "0"},
        {"Load stepping/Stage end times", "1, 2"},
        {"Load stepping/Control", "load, load"},
-       {"Load stepping/Maximum increment", "0.25"},
+       {"Load stepping/Maximum increment", "0.5"},
        {"Load stepping/Path following/Target monitor value", ""}},
       std::string(PNEUMA_SOURCE_DIR) + "/parameter_files/waterbeam_cables.prm")
       ->run();
