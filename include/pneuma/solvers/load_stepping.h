@@ -61,12 +61,11 @@ namespace pneuma
       /// stepping over a stage end.
       double
       next_time(const double t, const double dt) const;
-      /// Increment after a converged step with @p iterations (at most
-      /// the maximum increment if @p capped: a path-controlled stage caps
-      /// the load factor's change instead, not its arc length).
-      /// The increment after a step of @p dt that took @p iterations
-      /// Newton iterations: grown after an easy step, and if @p capped,
-      /// at most the maximum of the stage that follows time @p t.
+      /// The increment after a converged step of @p dt that took
+      /// @p iterations Newton iterations: grown after an easy step, and if
+      /// @p capped at most the maximum of the stage that follows time
+      /// @p t (a path-controlled stage caps the load factor's change
+      /// instead, not its arc length).
       double
       grown(const double       dt,
             const unsigned int iterations,
