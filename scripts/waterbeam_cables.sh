@@ -20,10 +20,14 @@ out=output/waterbeam_cables
 mkdir -p "$out"
 source "$root/scripts/scene_tools.sh"
 scene_run cables parameter_files/waterbeam_cables.prm "$@"
-# The walls smoothed as in the cables scene, so that only the cables differ.
+# The walls smoothed as in the cables scene (its parameter file's value,
+# read here so that the two cannot drift apart), so that only the cables
+# differ.
+zeta=$(awk '$2 == "Wrinkling" && $3 == "smoothing" { print $5; exit }' \
+  parameter_files/waterbeam_cables.prm)
 smoothing=()
 for r in 0 1 2 3; do
-  smoothing+=(--set "Materials/Region $r/Wrinkling smoothing=1e-4")
+  smoothing+=(--set "Materials/Region $r/Wrinkling smoothing=$zeta")
 done
 scene_run no_cables parameter_files/waterbeam_bending.prm "${waterbeam_water[@]}" \
   "${smoothing[@]}" "$@"
