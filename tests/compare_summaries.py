@@ -13,10 +13,14 @@ import math
 import re
 import sys
 
-# The last factorization's kind, size and work describe this process (a
-# run restarted at its end factorizes nothing), not the result.
+# The last factorization's kind, size and work, and the analyses and
+# seconds of the LDL^T, describe this process (a run restarted at its end
+# factorizes nothing; a restarted one analyses its pattern again), not the
+# result.
 SKIP = {"wall_seconds", "timings", "message", "units", "mpi_ranks",
-        "factorization_symmetric", "factor_entries", "factorization_gflop"}
+        "factorization_symmetric", "factor_entries", "factorization_gflop",
+        "ldlt_analyses", "ldlt_analysis_seconds",
+        "ldlt_factorization_seconds", "ldlt_solve_seconds"}
 
 
 def flatten(value, prefix, out):

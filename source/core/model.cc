@@ -675,7 +675,7 @@ namespace pneuma
                        LA::Vector                    *f_ext,
                        solvers::BorderCoupling       &border)
   {
-    TimerOutput::Scope ts(*timers, "assembly");
+    TimerOutput::Scope ts(*timers, K ? "assembly" : "residual assembly");
     ghost(u.field);
     residual.field = 0.;
     residual.border.reinit(n_border());

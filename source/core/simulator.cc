@@ -666,6 +666,24 @@ namespace pneuma
                 "",
                 1e-9 * solver.factorization_flops(),
                 Statistics::summary);
+        // Where the LDL^T's time went (MUMPS' phases on rank 0).
+        const auto work = solver.symmetric_work();
+        row.add_count(run, "ldlt_analyses", work.analyses, Statistics::summary);
+        row.add(run,
+                "ldlt_analysis_seconds",
+                "s",
+                work.analysis_seconds,
+                Statistics::summary);
+        row.add(run,
+                "ldlt_factorization_seconds",
+                "s",
+                work.factorization_seconds,
+                Statistics::summary);
+        row.add(run,
+                "ldlt_solve_seconds",
+                "s",
+                work.solve_seconds,
+                Statistics::summary);
       }
     row.add(
       run, "final_time", "", path_result.final_time, counts | Statistics::test);

@@ -4,6 +4,7 @@
 #include <dmumps_c.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -21,9 +22,29 @@ namespace pneuma
       std::vector<MUMPS_INT> rows, columns;
       std::vector<double>    values;
       MUMPS_INT8             n = 0;
+      Work                   work;
 
       void
       call(const int job)
+      {
+        const auto start = std::chrono::steady_clock::now();
+        timed_call(job);
+        const double seconds = std::chrono::duration<double>(
+                                 std::chrono::steady_clock::now() - start)
+                                 .count();
+        if (job == 1)
+          {
+            ++work.analyses;
+            work.analysis_seconds += seconds;
+          }
+        else if (job == 2)
+          work.factorization_seconds += seconds;
+        else if (job == 3)
+          work.solve_seconds += seconds;
+      }
+
+      void
+      timed_call(const int job)
       {
         id.job = job;
         dmumps_c(&id);
@@ -132,10 +153,14 @@ namespace pneuma
       // next to MUMPS' own arrays would raise the peak memory of the
       // factorization. With the analysed pattern unchanged only the values
       // are rewritten (the indices are compared where they stand).
-      const Epetra_CrsMatrix &M              = A.trilinos_matrix();
-      Data                   &d              = *data;
-      DMUMPS_STRUC_C         &id             = d.id;
-      const auto              for_each_entry = [&](const auto &visit) {
+      const Epetra_CrsMatrix &M  = A.trilinos_matrix();
+      Data                   &d  = *data;
+      DMUMPS_STRUC_C         &id = d.id;
+      // The global index of each local column, once (not per entry).
+      std::vector<long long> global_column(M.NumMyCols());
+      for (int c = 0; c < M.NumMyCols(); ++c)
+        global_column[c] = M.GCID64(c);
+      const auto for_each_entry = [&](const auto &visit) {
         for (int r = 0; r < M.NumMyRows(); ++r)
           {
             int     n       = 0;
@@ -145,7 +170,7 @@ namespace pneuma
             const long long row = M.GRID64(r);
             for (int k = 0; k < n; ++k)
               {
-                const long long column = M.GCID64(local[k]);
+                const long long column = global_column[local[k]];
                 if (column >= row || id.sym == 0)
                   visit(static_cast<MUMPS_INT>(row + 1),
                         static_cast<MUMPS_INT>(column + 1),
@@ -208,6 +233,14 @@ namespace pneuma
           id.irn_loc = d.rows.data();
           id.jcn_loc = d.columns.data();
           id.a_loc   = d.values.data();
+          // ICNTL(15) = -3: the unknowns come in blocks of three (the
+          // displacement components of a node, a cable's directors), so
+          // the ordering works on the graph of the nodes, a third of the
+          // size (MUMPS 5.5 user guide, ICNTL(15)): METIS' analysis of the
+          // waterbeam at 158k unknowns takes 0.9 s instead of 4.3 s. It
+          // is only a hint to the analysis; the factors are exact for any
+          // pattern.
+          id.icntl[14] = id.n % 3 == 0 ? -3 : 0;
           d.call(1); // analysis
           d.analysed = true;
         }
@@ -363,6 +396,12 @@ namespace pneuma
     SymmetricInertia::factor_entries() const
     {
       return mumps_count(data->id.infog[28]); // INFOG(29)
+    }
+
+    const SymmetricInertia::Work &
+    SymmetricInertia::work() const
+    {
+      return data->work;
     }
 
     double

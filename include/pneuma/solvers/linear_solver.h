@@ -156,6 +156,11 @@ namespace pneuma
       double
       factorization_flops() const;
 
+      /// The work of the symmetric (LDL^T) factorizations so far:
+      /// analyses and the seconds of MUMPS' phases (zero without them).
+      SymmetricInertia::Work
+      symmetric_work() const;
+
       /// Numeric factorizations done so far (direct solver).
       unsigned int
       n_factorizations() const
@@ -223,6 +228,10 @@ namespace pneuma
       /// MUMPS' LDL^T of a symmetric tangent (its analysis is kept while
       /// the sparsity does not change).
       std::unique_ptr<SymmetricInertia> symmetric;
+      /// The work of symmetric factorizations released by reset().
+      SymmetricInertia::Work released_work;
+      void
+      release_symmetric();
       /// The active factorization is the LDL^T.
       bool use_symmetric = false;
       /// set_symmetric_possible().

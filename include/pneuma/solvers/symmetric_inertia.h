@@ -114,6 +114,19 @@ namespace pneuma
       double
       factorization_flops() const;
 
+      /// Work done so far: analyses (one per sparsity pattern) and the
+      /// wall seconds of MUMPS' analysis, numeric factorization and solve
+      /// phases (JOB = 1, 2, 3) on this rank.
+      struct Work
+      {
+        unsigned int analyses              = 0;
+        double       analysis_seconds      = 0.;
+        double       factorization_seconds = 0.;
+        double       solve_seconds         = 0.;
+      };
+      const Work &
+      work() const;
+
     private:
       struct Data;
       std::unique_ptr<Data> data;
