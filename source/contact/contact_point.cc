@@ -481,6 +481,91 @@ namespace pneuma
     namespace
     {
       /**
+       * The full variable i of the section case (slave axis at the nodes,
+       * 0-5; a1, a2 at node 0, 6-11, and node 1, 12-17; the master nodes)
+       * as the reduced variable r[i] (x, a1, a2, master) times w[i].
+       */
+      template <int n_full>
+      void
+      section_variables(const double                      eta,
+                        std::array<unsigned int, n_full> &r,
+                        std::array<double, n_full>       &w)
+      {
+        w.fill(1.);
+        for (unsigned int i = 0; i < n_full; ++i)
+          if (i < 6)
+            {
+              r[i] = i % 3;
+              w[i] = i < 3 ? 1. - eta : eta;
+            }
+          else if (i < 18)
+            {
+              r[i] = 3 + (i - 6) % 6;
+              w[i] = i < 12 ? 1. - eta : eta;
+            }
+          else
+            r[i] = i - 9;
+      }
+
+      /**
+       * The energy and gradient of penalty_terms_section() alone (a
+       * residual without the tangent): first-order Sacado numbers in the
+       * reduced variables through one Newton step of the projection from
+       * the converged xi (Newton's error is squared, so the first
+       * derivatives are exact), at 1/(n + 1) of the nested numbers' cost.
+       */
+      template <int n>
+      double
+      penalty_gradient_section(const MasterPatch                 &patch,
+                               const SlaveSection                &section,
+                               const std::array<Tensor<1, 3>, 2> &slave,
+                               const double                       eta,
+                               const double                       penalty,
+                               const double                       weight,
+                               const Point<2>                    &xi_converged,
+                               Vector<double>                    *gradient)
+      {
+        using AD               = Sacado::Fad::SFad<double, n>;
+        const unsigned int n_m = patch.nodes.size();
+        AD                 x[3], a1[3], a2[3];
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            x[c]  = AD(n, c, (1. - eta) * slave[0][c] + eta * slave[1][c]);
+            a1[c] = AD(n,
+                       3 + c,
+                       (1. - eta) * section.a1[0][c] + eta * section.a1[1][c]);
+            a2[c] = AD(n,
+                       6 + c,
+                       (1. - eta) * section.a2[0][c] + eta * section.a2[1][c]);
+          }
+        std::vector<std::array<AD, 3>> y(n_m);
+        for (unsigned int a = 0; a < n_m; ++a)
+          for (unsigned int c = 0; c < 3; ++c)
+            y[a][c] = AD(n, 9 + 3 * a + c, patch.nodes[a][c]);
+        AD xi[2] = {AD(xi_converged[0]), AD(xi_converged[1])};
+        newton_step(patch.degree, y, x, xi);
+        AD       normal[3];
+        const AD g =
+          gap(patch.degree, y, x, xi, patch.sign, 0., normal, a1, a2);
+        constexpr unsigned int n_full = n + 9;
+        if (gradient)
+          gradient->reinit(n_full);
+        if (g.val() >= 0.)
+          return 0.;
+        const AD energy = 0.5 * weight * penalty * g * g;
+        std::array<unsigned int, n_full> r;
+        std::array<double, n_full>       w;
+        section_variables<n_full>(eta, r, w);
+        if (gradient)
+          for (unsigned int i = 0; i < n_full; ++i)
+            (*gradient)(i) = w[i] * energy.dx(r[i]);
+        return energy.val();
+      }
+    } // namespace
+
+    namespace
+    {
+      /**
        * The penalty energy with an elliptic slave section: h(n) depends on
        * n, so the closed-form gradient of the circular case does not hold;
        * energy, gradient and Hessian come from nested (second-order)
@@ -506,10 +591,19 @@ namespace pneuma
                             Vector<double>                    *gradient,
                             FullMatrix<double>                *hessian)
       {
-        using AD1                   = Sacado::Fad::SFad<double, n>;
-        using AD2                   = Sacado::Fad::SFad<AD1, n>;
-        const unsigned int n_m      = patch.nodes.size();
-        const auto         variable = [](const unsigned int k, const double v) {
+        using AD1              = Sacado::Fad::SFad<double, n>;
+        using AD2              = Sacado::Fad::SFad<AD1, n>;
+        const unsigned int n_m = patch.nodes.size();
+        if (!hessian)
+          return penalty_gradient_section<n>(patch,
+                                             section,
+                                             slave,
+                                             eta,
+                                             penalty,
+                                             weight,
+                                             xi_converged,
+                                             gradient);
+        const auto variable = [](const unsigned int k, const double v) {
           return AD2(n, k, AD1(n, k, v));
         };
         AD2 x[3], a1[3], a2[3];
@@ -567,20 +661,7 @@ namespace pneuma
         // master nodes.
         std::array<unsigned int, n_full> r;
         std::array<double, n_full>       w;
-        w.fill(1.);
-        for (unsigned int i = 0; i < n_full; ++i)
-          if (i < 6)
-            {
-              r[i] = i % 3;
-              w[i] = i < 3 ? 1. - eta : eta;
-            }
-          else if (i < 18)
-            {
-              r[i] = 3 + (i - 6) % 6;
-              w[i] = i < 12 ? 1. - eta : eta;
-            }
-          else
-            r[i] = i - 9;
+        section_variables<n_full>(eta, r, w);
         for (unsigned int i = 0; i < n_full; ++i)
           {
             if (gradient)
