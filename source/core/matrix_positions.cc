@@ -5,7 +5,9 @@
 #include <Epetra_Map.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <map>
 
 namespace pneuma
 {
@@ -92,6 +94,234 @@ namespace pneuma
         }
       return true;
     }
+    bool
+    MatrixPositions::update(
+      const SparseMatrix                      &matrix,
+      const dealii::types::global_dof_index   *dofs,
+      const unsigned int                       n_cells,
+      const unsigned int                       n_dofs,
+      const dealii::AffineConstraints<double> &constraints)
+    {
+      const Key old = key;
+      if (!update(matrix, dofs, n_cells, n_dofs))
+        return false;
+      std::fill(nonlocal_values.begin(), nonlocal_values.end(), 0.);
+      if (key == old && constraints_address == &constraints
+          && n_constraint_lines == constraints.n_constraints()
+          && condensed_of.size() == n_cells)
+        return true;
+      constraints_address = &constraints;
+      n_constraint_lines  = constraints.n_constraints();
+      condensed_of.assign(n_cells, -1);
+      condensed_cells.clear();
+      nonlocal_entries.clear();
+      std::map<std::pair<dealii::types::global_dof_index,
+                         dealii::types::global_dof_index>,
+               std::ptrdiff_t>
+        slots;
+
+      const Epetra_CrsMatrix &A       = matrix.trilinos_matrix();
+      int                    *offsets = nullptr, *indices = nullptr;
+      double                 *vals = nullptr;
+      A.ExtractCrsDataPointers(offsets, indices, vals);
+      const Epetra_BlockMap &rows = A.RowMap();
+      const Epetra_BlockMap &cols = A.ColMap();
+      using int_type              = dealii::TrilinosWrappers::types::int_type;
+      // Where (global row i, global column j) is summed: its position in
+      // the values (owned row; `missing` if the pattern lacks it), or
+      // -(s + 1) for the slot s of a row owned elsewhere (added in
+      // flush()).
+      constexpr std::ptrdiff_t missing =
+        std::numeric_limits<std::ptrdiff_t>::min();
+      const auto position = [&](const dealii::types::global_dof_index i,
+                                const dealii::types::global_dof_index j) {
+        const int r = rows.LID(static_cast<int_type>(i));
+        if (r < 0)
+          {
+            const auto it = slots.emplace(std::make_pair(i, j), slots.size());
+            if (it.second)
+              nonlocal_entries.emplace_back(i, j);
+            return -(it.first->second + 1);
+          }
+        const int c = cols.LID(static_cast<int_type>(j));
+        if (c < 0)
+          return missing;
+        const int *begin = indices + offsets[r];
+        const int *end   = indices + offsets[r + 1];
+        const int *p     = std::is_sorted(begin, end)
+                             ? std::lower_bound(begin, end, c)
+                             : std::find(begin, end, c);
+        return p == end || *p != c ? missing : std::ptrdiff_t(p - indices);
+      };
+      std::vector<dealii::types::global_dof_index> targets;
+      for (unsigned int k = 0; k < n_cells; ++k)
+        {
+          const auto *cell_dofs = dofs + std::size_t(k) * n_dofs;
+          bool        any = false, usable = true;
+          targets.clear();
+          for (unsigned int i = 0; i < n_dofs && usable; ++i)
+            {
+              const auto d = cell_dofs[i];
+              if (!constraints.is_constrained(d))
+                {
+                  targets.push_back(d);
+                  continue;
+                }
+              any = true;
+              if (constraints.is_inhomogeneously_constrained(d))
+                usable = false;
+              else
+                for (const auto &entry : *constraints.get_constraint_entries(d))
+                  {
+                    if (constraints.is_constrained(entry.first))
+                      usable = false; // not closed
+                    targets.push_back(entry.first);
+                  }
+            }
+          if (!any || !usable)
+            continue;
+          std::sort(targets.begin(), targets.end());
+          targets.erase(std::unique(targets.begin(), targets.end()),
+                        targets.end());
+          const unsigned int n_t = targets.size();
+          Condensed          c;
+          c.target_rows.resize(n_t);
+          c.weights.assign(std::size_t(n_dofs) * n_t, 0.);
+          c.pair_positions.resize(std::size_t(n_t) * n_t);
+          const auto target = [&](const dealii::types::global_dof_index d) {
+            return static_cast<unsigned int>(
+              std::lower_bound(targets.begin(), targets.end(), d)
+              - targets.begin());
+          };
+          for (unsigned int a = 0; a < n_t && usable; ++a)
+            {
+              c.target_rows[a] = rows.LID(static_cast<int_type>(targets[a]));
+              c.owned          = c.owned && c.target_rows[a] >= 0;
+              for (unsigned int b = 0; b < n_t && usable; ++b)
+                {
+                  const auto p = position(targets[a], targets[b]);
+                  usable       = p != missing;
+                  c.pair_positions[std::size_t(a) * n_t + b] = p;
+                }
+            }
+          for (unsigned int i = 0; i < n_dofs && usable; ++i)
+            {
+              const auto d = cell_dofs[i];
+              if (!constraints.is_constrained(d))
+                {
+                  c.weights[std::size_t(i) * n_t + target(d)] = 1.;
+                  continue;
+                }
+              for (const auto &entry : *constraints.get_constraint_entries(d))
+                c.weights[std::size_t(i) * n_t + target(entry.first)] +=
+                  entry.second;
+              const auto p = position(d, d);
+              usable       = p != missing;
+              c.constrained.push_back(i);
+              c.diagonal_positions.push_back(p);
+            }
+          if (!usable)
+            continue;
+          condensed_of[k] = condensed_cells.size();
+          condensed_cells.push_back(std::move(c));
+        }
+      nonlocal_values.assign(nonlocal_entries.size(), 0.);
+      return true;
+    }
+
+    void
+    MatrixPositions::add_condensed(const unsigned int k,
+                                   const double      *m,
+                                   const double      *v,
+                                   double            *local) const
+    {
+      const Condensed   &c   = condensed_cells[condensed_of[k]];
+      const unsigned int n   = n_dofs_per_cell;
+      const unsigned int n_t = c.target_rows.size();
+      const double      *C   = c.weights.data();
+      const auto         add = [&](const std::ptrdiff_t p, const double value) {
+        if (p >= 0)
+          values[p] += value;
+        else
+          nonlocal_values[-p - 1] += value;
+      };
+      if (m)
+        {
+          // K C (n x n_t), then C^T (K C).
+          scratch.assign(std::size_t(n) * n_t, 0.);
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j < n; ++j)
+              {
+                const double kij = m[std::size_t(i) * n + j];
+                if (kij == 0.)
+                  continue;
+                const double *Cj  = C + std::size_t(j) * n_t;
+                double       *row = &scratch[std::size_t(i) * n_t];
+                for (unsigned int b = 0; b < n_t; ++b)
+                  row[b] += kij * Cj[b];
+              }
+          for (unsigned int a = 0; a < n_t; ++a)
+            for (unsigned int b = 0; b < n_t; ++b)
+              {
+                double sum = 0.;
+                for (unsigned int i = 0; i < n; ++i)
+                  sum += C[std::size_t(i) * n_t + a]
+                         * scratch[std::size_t(i) * n_t + b];
+                add(c.pair_positions[std::size_t(a) * n_t + b], sum);
+              }
+          // deal.II's diagonal of the constrained rows: |K_ii|, or where
+          // K_ii is 0 the mean of |K_jj| (if that is 0, the l1 norm of K
+          // over n; if that is 0, 1).
+          double average = 0.;
+          for (unsigned int i = 0; i < n; ++i)
+            average += std::abs(m[std::size_t(i) * n + i]);
+          average /= n;
+          if (average == 0.)
+            {
+              for (unsigned int j = 0; j < n; ++j)
+                {
+                  double column = 0.;
+                  for (unsigned int i = 0; i < n; ++i)
+                    column += std::abs(m[std::size_t(i) * n + j]);
+                  average = std::max(average, column);
+                }
+              average /= n;
+              if (average == 0.)
+                average = 1.;
+            }
+          for (unsigned int q = 0; q < c.constrained.size(); ++q)
+            {
+              const unsigned int i = c.constrained[q];
+              const double       d = std::abs(m[std::size_t(i) * n + i]);
+              add(c.diagonal_positions[q], d != 0. ? d : average);
+            }
+        }
+      if (v && local)
+        {
+          Assert(c.owned, dealii::ExcInternalError());
+          for (unsigned int a = 0; a < n_t; ++a)
+            {
+              double sum = 0.;
+              for (unsigned int i = 0; i < n; ++i)
+                sum += C[std::size_t(i) * n_t + a] * v[i];
+              local[c.target_rows[a]] += sum;
+            }
+        }
+    }
+
+    void
+    MatrixPositions::flush(SparseMatrix &matrix) const
+    {
+      for (std::size_t s = 0; s < nonlocal_entries.size(); ++s)
+        if (nonlocal_values[s] != 0.)
+          {
+            matrix.add(nonlocal_entries[s].first,
+                       nonlocal_entries[s].second,
+                       nonlocal_values[s]);
+            nonlocal_values[s] = 0.;
+          }
+    }
+
     double *
     MatrixPositions::local_values(Vector &vector) const
     {

@@ -126,6 +126,7 @@ namespace pneuma
             {
               cell_index  = other.cell_index;
               fast        = other.fast;
+              condensed   = other.condensed;
               dof_indices = other.dof_indices;
               local_u     = other.local_u;
               matrix      = other.matrix;
@@ -141,6 +142,7 @@ namespace pneuma
 
         unsigned int                                    cell_index = 0;
         bool                                            fast       = false;
+        bool                                            condensed  = false;
         std::vector<types::global_dof_index>            dof_indices;
         std::vector<double>                             local_u;
         FullMatrix<double>                              matrix;
@@ -179,7 +181,8 @@ namespace pneuma
                           && positions.update(*request.tangent,
                                               ref.dof_indices(0),
                                               ref.n_cells(),
-                                              n_dofs);
+                                              n_dofs,
+                                              constraints);
       double *residual_values = direct && request.residual
                                   ? positions.local_values(*request.residual)
                                   : nullptr;
@@ -418,6 +421,10 @@ namespace pneuma
         copy.fast = direct && positions.direct(cell_index);
         for (unsigned int i = 0; copy.fast && i < n_dofs; ++i)
           copy.fast = !constraints.is_constrained(copy.dof_indices[i]);
+        // Cells with constrained dofs (rigid plates) whose targets are
+        // owned: condensed at precomputed positions.
+        copy.condensed =
+          direct && !copy.fast && positions.condensed(cell_index);
       };
 
       // One cell at a time, in cell order: the sums over cells are formed
@@ -432,6 +439,11 @@ namespace pneuma
                                     LA::Vector           *target) {
           if (copy.fast && local)
             positions.add_vector(copy.cell_index, cell_vector.data(), local);
+          else if (copy.condensed && local
+                   && positions.condensed_owned(copy.cell_index))
+            positions.add_condensed_vector(copy.cell_index,
+                                           cell_vector.data(),
+                                           local);
           else if (target)
             constraints.distribute_local_to_global(cell_vector,
                                                    copy.dof_indices,
@@ -440,6 +452,14 @@ namespace pneuma
         if (copy.fast)
           {
             positions.add(copy.cell_index, &copy.matrix(0, 0));
+            add_vector(copy.residual, residual_values, request.residual);
+          }
+        else if (copy.condensed)
+          {
+            positions.add_condensed(copy.cell_index,
+                                    &copy.matrix(0, 0),
+                                    nullptr,
+                                    nullptr);
             add_vector(copy.residual, residual_values, request.residual);
           }
         else
@@ -462,6 +482,8 @@ namespace pneuma
         2 * MultithreadInfo::n_threads(),
         cells_per_task);
 
+      if (direct)
+        positions.flush(*request.tangent);
       if (request.residual)
         request.residual->compress(VectorOperation::add);
       if (request.external)

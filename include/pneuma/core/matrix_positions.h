@@ -18,8 +18,11 @@
  * indices and values and a checksum of the column indices.
  */
 
+#include <deal.II/lac/affine_constraints.h>
+
 #include <pneuma/core/linear_algebra.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -41,6 +44,70 @@ namespace pneuma
              const dealii::types::global_dof_index *dofs,
              const unsigned int                     n_cells,
              const unsigned int                     n_dofs);
+
+      /**
+       * The same, and with @p constraints (homogeneous where a cell's dofs
+       * are constrained; closed) also the positions of the cells with
+       * constrained dofs whose targets (their unconstrained dofs and the
+       * masters of the constrained ones) and constrained dofs all have
+       * owned rows: such a cell matrix K is added as C^T K C on the
+       * targets (C: the constraints' weights) plus deal.II's diagonal
+       * entry on each constrained row (AffineConstraints::
+       * distribute_local_to_global, whose result it reproduces), without
+       * a global-index lookup. The rigid end plates are a quarter of the
+       * waterbeam's cells, each with its 12 unknowns on the plate's 9.
+       */
+      bool
+      update(const SparseMatrix                      &matrix,
+             const dealii::types::global_dof_index   *dofs,
+             const unsigned int                       n_cells,
+             const unsigned int                       n_dofs,
+             const dealii::AffineConstraints<double> &constraints);
+
+      /// Is cell @p k added condensed (see update())?
+      bool
+      condensed(const unsigned int k) const
+      {
+        return !condensed_of.empty() && condensed_of[k] >= 0;
+      }
+
+      /**
+       * Add the row-major cell matrix @p m of a condensed cell @p k (if
+       * not nullptr), and its cell vector @p v to the @p local values (if
+       * both are not nullptr).
+       */
+      void
+      add_condensed(const unsigned int k,
+                    const double      *m,
+                    const double      *v,
+                    double            *local) const;
+
+      /// Are all targets of the condensed cell @p k owned here (may its
+      /// vectors go to the local values)?
+      bool
+      condensed_owned(const unsigned int k) const
+      {
+        return condensed_cells[condensed_of[k]].owned;
+      }
+
+      /// Add the cell vector @p v of a condensed cell @p k whose targets
+      /// are owned to @p local.
+      void
+      add_condensed_vector(const unsigned int k,
+                           const double      *v,
+                           double            *local) const
+      {
+        add_condensed(k, nullptr, v, local);
+      }
+
+      /**
+       * Add the sums of the condensed entries in rows owned by other
+       * ranks (a plate whose three nodes are there) to @p matrix through
+       * its global indices, once per entry and assembly; call before the
+       * matrix is compressed.
+       */
+      void
+      flush(SparseMatrix &matrix) const;
 
       /// Are all rows of cell @p k owned here (direct path possible)?
       bool
@@ -107,6 +174,33 @@ namespace pneuma
       /// Global indices of the matrix's local rows.
       std::vector<int>           matrix_rows;
       std::vector<std::uint16_t> offset_of;
+
+      /// A cell added through its constraints.
+      struct Condensed
+      {
+        /// Local rows of the targets; the cell dof's weights on them
+        /// (n_dofs x n_targets, row-major).
+        std::vector<int>    target_rows;
+        bool                owned = true;
+        std::vector<double> weights;
+        /// Positions in the values of the target pairs (n_targets^2),
+        /// or -(s + 1) for the nonlocal slot s.
+        std::vector<std::ptrdiff_t> pair_positions;
+        /// The constrained cell dofs and the positions of their diagonal.
+        std::vector<unsigned int>   constrained;
+        std::vector<std::ptrdiff_t> diagonal_positions;
+      };
+      std::vector<int>       condensed_of;
+      std::vector<Condensed> condensed_cells;
+      const void            *constraints_address = nullptr;
+      std::size_t            n_constraint_lines  = 0;
+      /// Entries in rows owned elsewhere and their sums in this assembly.
+      std::vector<std::pair<dealii::types::global_dof_index,
+                            dealii::types::global_dof_index>>
+                                  nonlocal_entries;
+      mutable std::vector<double> nonlocal_values;
+      /// K C of add_condensed() (the copier is serial).
+      mutable std::vector<double> scratch;
     };
   } // namespace LA
 } // namespace pneuma
