@@ -333,22 +333,10 @@ namespace pneuma
               // In master order, whatever the tree's: the projections and
               // their sums do not depend on the search structure.
               const auto found = masters_near(tree, x[0], x[1], reach);
-              // A new coupling is a new sparsity pattern, hence a new
-              // analysis of the direct solver (with METIS several
-              // factorizations' worth): the pattern takes the cells within
-              // a second search distance too, so that the cable's slip in
-              // the next steps finds its couplings already there.
-              const bool is_new =
-                std::any_of(found.begin(), found.end(), [&](unsigned int m) {
-                  return coupled.count(std::array<unsigned int, 3>{{k, c, m}})
-                         == 0;
-                });
-              if (is_new)
-                for (const unsigned int m :
-                     masters_near(tree, x[0], x[1], reach + d.search))
-                  if (coupled.insert(std::array<unsigned int, 3>{{k, c, m}})
-                        .second)
-                    grown = true;
+              for (const unsigned int m : found)
+                if (coupled.insert(std::array<unsigned int, 3>{{k, c, m}})
+                      .second)
+                  grown = true;
               d.candidates[c] = found;
             }
         }
