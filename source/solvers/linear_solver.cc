@@ -61,7 +61,7 @@ namespace pneuma
         "minimum fill) has the cheapest analysis (benchmarks/"
         "inflated_cylinder/results.md); metis orders large membranes for "
         "about 25 % less factorization work (the waterbeam at 158k "
-        "unknowns: 7.4 instead of 9.9 GFlop) for an analysis of about two "
+        "unknowns: 7.7 instead of 9.9 GFlop) for an analysis of about two "
         "factorizations, worth it where one sparsity pattern serves many "
         "Newton iterations (parameter_files/waterbeam_cables.prm).",
         Patterns::Selection("metis|amd|amf|qamd|scotch|pord|auto"));
