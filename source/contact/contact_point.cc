@@ -508,6 +508,40 @@ namespace pneuma
       }
 
       /**
+       * The reduced variables of an elliptic-section point
+       * (section_variables()): the axis x (0-2), the section a1 (3-5) and a2
+       * (6-8) at the point, linear in the slave's nodal values, and the master
+       * nodes (9 on), each made by @p variable(index, value).
+       */
+      template <typename Number, typename Variable>
+      void
+      seed_section_point(const MasterPatch                  &patch,
+                         const SlaveSection                 &section,
+                         const std::array<Tensor<1, 3>, 2>  &slave,
+                         const double                        eta,
+                         const Variable                     &variable,
+                         Number                              x[3],
+                         Number                              a1[3],
+                         Number                              a2[3],
+                         std::vector<std::array<Number, 3>> &y)
+      {
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            x[c] = variable(c, (1. - eta) * slave[0][c] + eta * slave[1][c]);
+            a1[c] =
+              variable(3 + c,
+                       (1. - eta) * section.a1[0][c] + eta * section.a1[1][c]);
+            a2[c] =
+              variable(6 + c,
+                       (1. - eta) * section.a2[0][c] + eta * section.a2[1][c]);
+          }
+        y.resize(patch.nodes.size());
+        for (unsigned int a = 0; a < patch.nodes.size(); ++a)
+          for (unsigned int c = 0; c < 3; ++c)
+            y[a][c] = variable(9 + 3 * a + c, patch.nodes[a][c]);
+      }
+
+      /**
        * The energy and gradient of penalty_terms_section() alone (a
        * residual without the tangent): first-order Sacado numbers in the
        * reduced variables through one Newton step of the projection from
@@ -525,23 +559,19 @@ namespace pneuma
                                const Point<2>                    &xi_converged,
                                Vector<double>                    *gradient)
       {
-        using AD               = Sacado::Fad::SFad<double, n>;
-        const unsigned int n_m = patch.nodes.size();
-        AD                 x[3], a1[3], a2[3];
-        for (unsigned int c = 0; c < 3; ++c)
-          {
-            x[c]  = AD(n, c, (1. - eta) * slave[0][c] + eta * slave[1][c]);
-            a1[c] = AD(n,
-                       3 + c,
-                       (1. - eta) * section.a1[0][c] + eta * section.a1[1][c]);
-            a2[c] = AD(n,
-                       6 + c,
-                       (1. - eta) * section.a2[0][c] + eta * section.a2[1][c]);
-          }
-        std::vector<std::array<AD, 3>> y(n_m);
-        for (unsigned int a = 0; a < n_m; ++a)
-          for (unsigned int c = 0; c < 3; ++c)
-            y[a][c] = AD(n, 9 + 3 * a + c, patch.nodes[a][c]);
+        using AD = Sacado::Fad::SFad<double, n>;
+        AD                             x[3], a1[3], a2[3];
+        std::vector<std::array<AD, 3>> y;
+        seed_section_point(
+          patch,
+          section,
+          slave,
+          eta,
+          [](const unsigned int k, const double v) { return AD(n, k, v); },
+          x,
+          a1,
+          a2,
+          y);
         AD xi[2] = {AD(xi_converged[0]), AD(xi_converged[1])};
         newton_step(patch.degree, y, x, xi);
         AD       normal[3];
@@ -603,24 +633,20 @@ namespace pneuma
                                              weight,
                                              xi_converged,
                                              gradient);
-        const auto variable = [](const unsigned int k, const double v) {
-          return AD2(n, k, AD1(n, k, v));
-        };
-        AD2 x[3], a1[3], a2[3];
-        for (unsigned int c = 0; c < 3; ++c)
-          {
-            x[c] = variable(c, (1. - eta) * slave[0][c] + eta * slave[1][c]);
-            a1[c] =
-              variable(3 + c,
-                       (1. - eta) * section.a1[0][c] + eta * section.a1[1][c]);
-            a2[c] =
-              variable(6 + c,
-                       (1. - eta) * section.a2[0][c] + eta * section.a2[1][c]);
-          }
-        std::vector<std::array<AD2, 3>> y(n_m);
-        for (unsigned int a = 0; a < n_m; ++a)
-          for (unsigned int c = 0; c < 3; ++c)
-            y[a][c] = variable(9 + 3 * a + c, patch.nodes[a][c]);
+        AD2                             x[3], a1[3], a2[3];
+        std::vector<std::array<AD2, 3>> y;
+        seed_section_point(
+          patch,
+          section,
+          slave,
+          eta,
+          [](const unsigned int k, const double v) {
+            return AD2(n, k, AD1(n, k, v));
+          },
+          x,
+          a1,
+          a2,
+          y);
         // The projection from the converged xi: the first Newton step
         // need only carry exact first derivatives (the second step makes
         // the second ones exact, as Newton's error is squared), so it is

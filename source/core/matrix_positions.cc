@@ -230,10 +230,7 @@ namespace pneuma
     }
 
     void
-    MatrixPositions::add_condensed(const unsigned int k,
-                                   const double      *m,
-                                   const double      *v,
-                                   double            *local) const
+    MatrixPositions::add_condensed(const unsigned int k, const double *m) const
     {
       const Condensed   &c   = condensed_cells[condensed_of[k]];
       const unsigned int n   = n_dofs_per_cell;
@@ -245,67 +242,74 @@ namespace pneuma
         else
           nonlocal_values[-p - 1] += value;
       };
-      if (m)
-        {
-          // K C (n x n_t), then C^T (K C).
-          scratch.assign(std::size_t(n) * n_t, 0.);
-          for (unsigned int i = 0; i < n; ++i)
-            for (unsigned int j = 0; j < n; ++j)
-              {
-                const double kij = m[std::size_t(i) * n + j];
-                if (kij == 0.)
-                  continue;
-                const double *Cj  = C + std::size_t(j) * n_t;
-                double       *row = &scratch[std::size_t(i) * n_t];
-                for (unsigned int b = 0; b < n_t; ++b)
-                  row[b] += kij * Cj[b];
-              }
-          for (unsigned int a = 0; a < n_t; ++a)
-            for (unsigned int b = 0; b < n_t; ++b)
-              {
-                double sum = 0.;
-                for (unsigned int i = 0; i < n; ++i)
-                  sum += C[std::size_t(i) * n_t + a]
-                         * scratch[std::size_t(i) * n_t + b];
-                add(c.pair_positions[std::size_t(a) * n_t + b], sum);
-              }
-          // deal.II's diagonal of the constrained rows: |K_ii|, or where
-          // K_ii is 0 the mean of |K_jj| (if that is 0, the l1 norm of K
-          // over n; if that is 0, 1).
-          double average = 0.;
-          for (unsigned int i = 0; i < n; ++i)
-            average += std::abs(m[std::size_t(i) * n + i]);
-          average /= n;
-          if (average == 0.)
+      {
+        // K C (n x n_t), then C^T (K C).
+        scratch.assign(std::size_t(n) * n_t, 0.);
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
             {
-              for (unsigned int j = 0; j < n; ++j)
-                {
-                  double column = 0.;
-                  for (unsigned int i = 0; i < n; ++i)
-                    column += std::abs(m[std::size_t(i) * n + j]);
-                  average = std::max(average, column);
-                }
-              average /= n;
-              if (average == 0.)
-                average = 1.;
+              const double kij = m[std::size_t(i) * n + j];
+              if (kij == 0.)
+                continue;
+              const double *Cj  = C + std::size_t(j) * n_t;
+              double       *row = &scratch[std::size_t(i) * n_t];
+              for (unsigned int b = 0; b < n_t; ++b)
+                row[b] += kij * Cj[b];
             }
-          for (unsigned int q = 0; q < c.constrained.size(); ++q)
-            {
-              const unsigned int i = c.constrained[q];
-              const double       d = std::abs(m[std::size_t(i) * n + i]);
-              add(c.diagonal_positions[q], d != 0. ? d : average);
-            }
-        }
-      if (v && local)
-        {
-          Assert(c.owned, dealii::ExcInternalError());
-          for (unsigned int a = 0; a < n_t; ++a)
+        for (unsigned int a = 0; a < n_t; ++a)
+          for (unsigned int b = 0; b < n_t; ++b)
             {
               double sum = 0.;
               for (unsigned int i = 0; i < n; ++i)
-                sum += C[std::size_t(i) * n_t + a] * v[i];
-              local[c.target_rows[a]] += sum;
+                sum += C[std::size_t(i) * n_t + a]
+                       * scratch[std::size_t(i) * n_t + b];
+              add(c.pair_positions[std::size_t(a) * n_t + b], sum);
             }
+        // deal.II's diagonal of the constrained rows: |K_ii|, or where
+        // K_ii is 0 the mean of |K_jj| (if that is 0, the l1 norm of K
+        // over n; if that is 0, 1).
+        double average = 0.;
+        for (unsigned int i = 0; i < n; ++i)
+          average += std::abs(m[std::size_t(i) * n + i]);
+        average /= n;
+        if (average == 0.)
+          {
+            for (unsigned int j = 0; j < n; ++j)
+              {
+                double column = 0.;
+                for (unsigned int i = 0; i < n; ++i)
+                  column += std::abs(m[std::size_t(i) * n + j]);
+                average = std::max(average, column);
+              }
+            average /= n;
+            if (average == 0.)
+              average = 1.;
+          }
+        for (unsigned int q = 0; q < c.constrained.size(); ++q)
+          {
+            const unsigned int i = c.constrained[q];
+            const double       d = std::abs(m[std::size_t(i) * n + i]);
+            add(c.diagonal_positions[q], d != 0. ? d : average);
+          }
+      }
+    }
+
+    void
+    MatrixPositions::add_condensed_vector(const unsigned int k,
+                                          const double      *v,
+                                          double            *local) const
+    {
+      const Condensed   &c   = condensed_cells[condensed_of[k]];
+      const unsigned int n   = n_dofs_per_cell;
+      const unsigned int n_t = c.target_rows.size();
+      const double      *C   = c.weights.data();
+      Assert(c.owned, dealii::ExcInternalError());
+      for (unsigned int a = 0; a < n_t; ++a)
+        {
+          double sum = 0.;
+          for (unsigned int i = 0; i < n; ++i)
+            sum += C[std::size_t(i) * n_t + a] * v[i];
+          local[c.target_rows[a]] += sum;
         }
     }
 

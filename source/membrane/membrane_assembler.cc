@@ -456,10 +456,7 @@ namespace pneuma
           }
         else if (copy.condensed)
           {
-            positions.add_condensed(copy.cell_index,
-                                    &copy.matrix(0, 0),
-                                    nullptr,
-                                    nullptr);
+            positions.add_condensed(copy.cell_index, &copy.matrix(0, 0));
             add_vector(copy.residual, residual_values, request.residual);
           }
         else

@@ -135,13 +135,7 @@ namespace pneuma
     LinearSolver::release_symmetric()
     {
       if (symmetric)
-        {
-          const auto &w = symmetric->work();
-          released_work.analyses += w.analyses;
-          released_work.analysis_seconds += w.analysis_seconds;
-          released_work.factorization_seconds += w.factorization_seconds;
-          released_work.solve_seconds += w.solve_seconds;
-        }
+        released_work += symmetric->work();
       symmetric.reset();
     }
 
@@ -150,13 +144,7 @@ namespace pneuma
     {
       SymmetricInertia::Work w = released_work;
       if (symmetric)
-        {
-          const auto &v = symmetric->work();
-          w.analyses += v.analyses;
-          w.analysis_seconds += v.analysis_seconds;
-          w.factorization_seconds += v.factorization_seconds;
-          w.solve_seconds += v.solve_seconds;
-        }
+        w += symmetric->work();
       return w;
     }
 

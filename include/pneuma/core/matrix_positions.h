@@ -71,16 +71,9 @@ namespace pneuma
         return !condensed_of.empty() && condensed_of[k] >= 0;
       }
 
-      /**
-       * Add the row-major cell matrix @p m of a condensed cell @p k (if
-       * not nullptr), and its cell vector @p v to the @p local values (if
-       * both are not nullptr).
-       */
+      /// Add the row-major cell matrix @p m of a condensed cell @p k.
       void
-      add_condensed(const unsigned int k,
-                    const double      *m,
-                    const double      *v,
-                    double            *local) const;
+      add_condensed(const unsigned int k, const double *m) const;
 
       /// Are all targets of the condensed cell @p k owned here (may its
       /// vectors go to the local values)?
@@ -95,10 +88,7 @@ namespace pneuma
       void
       add_condensed_vector(const unsigned int k,
                            const double      *v,
-                           double            *local) const
-      {
-        add_condensed(k, nullptr, v, local);
-      }
+                           double            *local) const;
 
       /**
        * Add the sums of the condensed entries in rows owned by other

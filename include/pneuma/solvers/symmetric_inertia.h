@@ -123,6 +123,16 @@ namespace pneuma
         double       analysis_seconds      = 0.;
         double       factorization_seconds = 0.;
         double       solve_seconds         = 0.;
+
+        Work &
+        operator+=(const Work &other)
+        {
+          analyses += other.analyses;
+          analysis_seconds += other.analysis_seconds;
+          factorization_seconds += other.factorization_seconds;
+          solve_seconds += other.solve_seconds;
+          return *this;
+        }
       };
       const Work &
       work() const;
