@@ -72,7 +72,7 @@ namespace pneuma
           }
         // Each node's weights once (the products are the same as inline,
         // so the sums are bitwise unchanged); a bilinear patch has no
-        // rho_11, rho_22. This is the inner loop of the contact's nested
+        // rho_11, rho_22. This is the inner loop of the contact's
         // automatic differentiation.
         const unsigned int n = degree + 1;
         for (unsigned int j = 0; j < n; ++j)
@@ -546,7 +546,7 @@ namespace pneuma
        * residual without the tangent): first-order Sacado numbers in the
        * reduced variables through one Newton step of the projection from
        * the converged xi (Newton's error is squared, so the first
-       * derivatives are exact), at 1/(n + 1) of the nested numbers' cost.
+       * derivatives are exact).
        */
       template <int n>
       double
@@ -596,18 +596,187 @@ namespace pneuma
     namespace
     {
       /**
+       * The gradient of the gap g = (x - rho).n - h(n) of an elliptic
+       * section in closed form, in the reduced variables (x, a1, a2,
+       * master nodes; section_variables()), as Sacado numbers whose
+       * derivatives are then the gap's Hessian (doc/theory.md §10.1).
+       * At fixed xi, with d = x - rho, p_i = a_i.n, h = |(p1, p2)|,
+       * q = (p1 a1 + p2 a2)/h (the gradient of h in n), m = rho_1 x rho_2
+       * and s = sign (I - n n)(d - q)/|m| (so that (d - q).dn = s.dm):
+       *   G_x = n, G_ai = -(p_i/h) n,
+       *   G_ya = -phi_a n + phi_a,1 rho_2 x s + phi_a,2 s x rho_1,
+       *   G_xi_b = s.(rho_1b x rho_2 + rho_1 x rho_2b).
+       * The projection's stationarity F_a = rho_a.d = 0 moves xi by
+       * xi_v = -A^{-1} F_v, A_ab = rho_ab.d - rho_a.rho_b (symmetric),
+       * F_a,x = rho_a, F_a,ya = phi_a,a d - phi_a rho_a, so with
+       * c = A^{-1} G_xi the total gradient is G_v - c_a F_a,v. Evaluated
+       * at xi carrying dxi/dv (one Newton step from the converged xi),
+       * the numbers' derivatives are exact.
+       */
+      template <typename Number>
+      void
+      section_gap_gradient(const unsigned int                        degree,
+                           const std::vector<std::array<Number, 3>> &y,
+                           const Number                              x[3],
+                           const Number                              a1[3],
+                           const Number                              a2[3],
+                           const Number                              xi[2],
+                           const double                              sign,
+                           Number                                   &g,
+                           std::vector<Number>                      &grad)
+      {
+        Number rho[3], t[2][3], tt[2][2][3];
+        surface(degree, y, xi, rho, t, tt);
+        const auto cross =
+          [](const Number u[3], const Number v[3], Number w[3]) {
+            w[0] = u[1] * v[2] - u[2] * v[1];
+            w[1] = u[2] * v[0] - u[0] * v[2];
+            w[2] = u[0] * v[1] - u[1] * v[0];
+          };
+        // Returns a Number: Sacado's expression templates must not
+        // outlive the operands.
+        const auto dot = [](const Number u[3], const Number v[3]) -> Number {
+          return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+        };
+        using std::sqrt;
+        Number m[3];
+        cross(t[0], t[1], m);
+        const Number length = sqrt(dot(m, m));
+        Number       n[3], d[3];
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            n[c] = sign * m[c] / length;
+            d[c] = x[c] - rho[c];
+          }
+        const Number p1 = dot(a1, n), p2 = dot(a2, n);
+        const Number h = sqrt(p1 * p1 + p2 * p2);
+        g              = dot(d, n) - h;
+        Number u[3];
+        for (unsigned int c = 0; c < 3; ++c)
+          u[c] = d[c] - (p1 * a1[c] + p2 * a2[c]) / h;
+        const Number un = dot(u, n);
+        Number       s[3];
+        for (unsigned int c = 0; c < 3; ++c)
+          s[c] = sign * (u[c] - un * n[c]) / length;
+        // G_xi and A.
+        Number G_xi[2], A[2][2];
+        for (unsigned int b = 0; b < 2; ++b)
+          {
+            Number w1[3], w2[3];
+            cross(tt[0][b], t[1], w1);
+            cross(t[0], tt[1][b], w2);
+            G_xi[b] = dot(s, w1) + dot(s, w2);
+            for (unsigned int a = 0; a < 2; ++a)
+              A[a][b] = dot(tt[a][b], d) - dot(t[a], t[b]);
+          }
+        const Number det  = A[0][0] * A[1][1] - A[0][1] * A[1][0];
+        const Number c[2] = {(A[1][1] * G_xi[0] - A[0][1] * G_xi[1]) / det,
+                             (A[0][0] * G_xi[1] - A[1][0] * G_xi[0]) / det};
+        Number       t2s[3], st1[3];
+        cross(t[1], s, t2s);
+        cross(s, t[0], st1);
+        const unsigned int n_m = y.size();
+        grad.resize(9 + 3 * n_m);
+        for (unsigned int k = 0; k < 3; ++k)
+          {
+            grad[k]     = n[k] - c[0] * t[0][k] - c[1] * t[1][k];
+            grad[3 + k] = -p1 / h * n[k];
+            grad[6 + k] = -p2 / h * n[k];
+          }
+        Number l1[3], dl1[3], ddl1[3], l2[3], dl2[3], ddl2[3];
+        lagrange(degree, xi[0], l1, dl1, ddl1);
+        lagrange(degree, xi[1], l2, dl2, ddl2);
+        const unsigned int k1 = degree + 1;
+        for (unsigned int a = 0; a < n_m; ++a)
+          {
+            const Number phi  = l1[a % k1] * l2[a / k1];
+            const Number phi1 = dl1[a % k1] * l2[a / k1];
+            const Number phi2 = l1[a % k1] * dl2[a / k1];
+            const Number cphi = c[0] * phi1 + c[1] * phi2;
+            for (unsigned int k = 0; k < 3; ++k)
+              grad[9 + 3 * a + k] = -phi * n[k] + phi1 * t2s[k] + phi2 * st1[k]
+                                    - cphi * d[k]
+                                    + phi * (c[0] * t[0][k] + c[1] * t[1][k]);
+          }
+      }
+
+      /**
+       * The energy, gradient and Hessian of an elliptic-section point:
+       * the closed-form gradient of the gap (section_gap_gradient()) in
+       * first-order Sacado numbers through one Newton step of the
+       * projection; the Hessian of Pi = w eps/2 g^2 is the Jacobian of
+       * w eps g grad g. Variables of the result as penalty_terms_section().
+       */
+      template <int n>
+      double
+      penalty_hessian_section(const MasterPatch                 &patch,
+                              const SlaveSection                &section,
+                              const std::array<Tensor<1, 3>, 2> &slave,
+                              const double                       eta,
+                              const double                       penalty,
+                              const double                       weight,
+                              const Point<2>                    &xi_converged,
+                              Vector<double>                    *gradient,
+                              FullMatrix<double>                &hessian)
+      {
+        using AD = Sacado::Fad::SFad<double, n>;
+        AD                             x[3], a1[3], a2[3];
+        std::vector<std::array<AD, 3>> y;
+        seed_section_point(
+          patch,
+          section,
+          slave,
+          eta,
+          [](const unsigned int k, const double v) { return AD(n, k, v); },
+          x,
+          a1,
+          a2,
+          y);
+        AD xi[2] = {AD(xi_converged[0]), AD(xi_converged[1])};
+        newton_step(patch.degree, y, x, xi);
+        AD              g;
+        std::vector<AD> grad;
+        section_gap_gradient(
+          patch.degree, y, x, a1, a2, xi, patch.sign, g, grad);
+        constexpr unsigned int n_full = n + 9;
+        if (gradient)
+          gradient->reinit(n_full);
+        hessian.reinit(n_full, n_full);
+        if (g.val() >= 0.)
+          return 0.;
+        std::array<unsigned int, n_full> r;
+        std::array<double, n_full>       w;
+        section_variables<n_full>(eta, r, w);
+        const AD s = weight * penalty * g;
+        for (unsigned int i = 0; i < n_full; ++i)
+          {
+            const AD gi = s * grad[r[i]];
+            if (gradient)
+              (*gradient)(i) = w[i] * gi.val();
+            for (unsigned int j = 0; j < n_full; ++j)
+              hessian(i, j) = w[i] * w[j] * gi.dx(r[j]);
+          }
+        for (unsigned int i = 0; i < n_full; ++i)
+          for (unsigned int j = 0; j < i; ++j)
+            hessian(i, j) = hessian(j, i) =
+              0.5 * (hessian(i, j) + hessian(j, i));
+        return 0.5 * weight * penalty * g.val() * g.val();
+      }
+    } // namespace
+
+    namespace
+    {
+      /**
        * The penalty energy with an elliptic slave section: h(n) depends on
-       * n, so the closed-form gradient of the circular case does not hold;
-       * energy, gradient and Hessian come from nested (second-order)
-       * Sacado numbers, again through two Newton steps of the projection.
+       * n, so the closed-form gradient of the circular case does not hold.
        * The point's axis x and section a1, a2 are linear in the slave's
-       * nodal values ((1 - eta) at node 0, eta at node 1), so the nested
+       * nodal values ((1 - eta) at node 0, eta at node 1), so the Sacado
        * numbers carry the reduced variables x, a1, a2 (9) and the master
        * nodes (@p n = 9 + 3 n_m) and the result is expanded to the slave's
-       * 18 nodal variables after: exact, and (21/30)^2 of the cost of
-       * differentiating in all 30 variables of a Q1 patch.
-       * Variables of the result: slave (6), section a1, a2 at both nodes
-       * (12), master.
+       * 18 nodal variables after. The gradient alone:
+       * penalty_gradient_section(); with the Hessian:
+       * penalty_hessian_section(). Variables of the result: slave (6),
+       * section a1, a2 at both nodes (12), master.
        */
       template <int n>
       double
@@ -621,9 +790,6 @@ namespace pneuma
                             Vector<double>                    *gradient,
                             FullMatrix<double>                *hessian)
       {
-        using AD1              = Sacado::Fad::SFad<double, n>;
-        using AD2              = Sacado::Fad::SFad<AD1, n>;
-        const unsigned int n_m = patch.nodes.size();
         if (!hessian)
           return penalty_gradient_section<n>(patch,
                                              section,
@@ -633,72 +799,15 @@ namespace pneuma
                                              weight,
                                              xi_converged,
                                              gradient);
-        AD2                             x[3], a1[3], a2[3];
-        std::vector<std::array<AD2, 3>> y;
-        seed_section_point(
-          patch,
-          section,
-          slave,
-          eta,
-          [](const unsigned int k, const double v) {
-            return AD2(n, k, AD1(n, k, v));
-          },
-          x,
-          a1,
-          a2,
-          y);
-        // The projection from the converged xi: the first Newton step
-        // need only carry exact first derivatives (the second step makes
-        // the second ones exact, as Newton's error is squared), so it is
-        // taken in first-order numbers and lifted.
-        AD2 xi[2];
-        {
-          AD1                             x1[3];
-          std::vector<std::array<AD1, 3>> y1(n_m);
-          for (unsigned int c = 0; c < 3; ++c)
-            x1[c] = x[c].val();
-          for (unsigned int a = 0; a < n_m; ++a)
-            for (unsigned int c = 0; c < 3; ++c)
-              y1[a][c] = y[a][c].val();
-          AD1 xi1[2] = {AD1(xi_converged[0]), AD1(xi_converged[1])};
-          newton_step(patch.degree, y1, x1, xi1);
-          for (unsigned int k = 0; k < 2; ++k)
-            {
-              xi[k] = AD2(xi1[k]);
-              xi[k].resize(n);
-              for (unsigned int i = 0; i < n; ++i)
-                xi[k].fastAccessDx(i) = AD1(xi1[k].dx(i));
-            }
-        }
-        newton_step(patch.degree, y, x, xi);
-        AD2       normal[3];
-        const AD2 g =
-          gap(patch.degree, y, x, xi, patch.sign, 0., normal, a1, a2);
-        constexpr unsigned int n_full = n + 9; // 18 + 3 n_m
-        if (gradient)
-          gradient->reinit(n_full);
-        if (hessian)
-          hessian->reinit(n_full, n_full);
-        if (g.val().val() >= 0.)
-          return 0.;
-        const AD2 energy = 0.5 * weight * penalty * g * g;
-        // Full variable i = reduced variable r[i] times w[i]: x at the
-        // nodes (0-5), a1 and a2 at node 0 (6-11) and node 1 (12-17), the
-        // master nodes.
-        std::array<unsigned int, n_full> r;
-        std::array<double, n_full>       w;
-        section_variables<n_full>(eta, r, w);
-        for (unsigned int i = 0; i < n_full; ++i)
-          {
-            if (gradient)
-              (*gradient)(i) = w[i] * energy.dx(r[i]).val();
-            if (hessian)
-              for (unsigned int j = 0; j <= i; ++j)
-                (*hessian)(i, j) = (*hessian)(j, i) =
-                  w[i] * w[j] * 0.5
-                  * (energy.dx(r[i]).dx(r[j]) + energy.dx(r[j]).dx(r[i]));
-          }
-        return energy.val().val();
+        return penalty_hessian_section<n>(patch,
+                                          section,
+                                          slave,
+                                          eta,
+                                          penalty,
+                                          weight,
+                                          xi_converged,
+                                          gradient,
+                                          *hessian);
       }
     } // namespace
 
