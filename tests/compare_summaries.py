@@ -19,7 +19,7 @@ import sys
 # result.
 SKIP = {"wall_seconds", "timings", "message", "units", "mpi_ranks",
         "factorization_symmetric", "factor_entries", "factorization_gflop",
-        "ldlt_analyses", "ldlt_analysis_seconds",
+        "ldlt_analyses", "ldlt_orderings", "ldlt_analysis_seconds",
         "ldlt_factorization_seconds", "ldlt_solve_seconds"}
 
 

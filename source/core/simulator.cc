@@ -669,6 +669,10 @@ namespace pneuma
         // Where the LDL^T's time went (MUMPS' phases on rank 0).
         const auto work = solver.symmetric_work();
         row.add_count(run, "ldlt_analyses", work.analyses, Statistics::summary);
+        row.add_count(run,
+                      "ldlt_orderings",
+                      work.orderings,
+                      Statistics::summary);
         row.add(run,
                 "ldlt_analysis_seconds",
                 "s",

@@ -15,6 +15,7 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <utility>
 
 namespace pneuma
 {
@@ -135,7 +136,10 @@ namespace pneuma
     LinearSolver::release_symmetric()
     {
       if (symmetric)
-        released_work += symmetric->work();
+        {
+          released_work += symmetric->work();
+          released_order = symmetric->pivot_order();
+        }
       symmetric.reset();
     }
 
@@ -170,6 +174,8 @@ namespace pneuma
           symmetric =
             std::make_unique<SymmetricInertia>(A.get_mpi_communicator(), 0.);
           symmetric->set_ordering(icntl7(direct_settings.ordering));
+          symmetric->set_pivot_order(std::move(released_order));
+          released_order = SymmetricInertia::PivotOrder();
         }
       try
         {

@@ -1,5 +1,7 @@
 #include <pneuma/solvers/symmetric_inertia.h>
 
+#include <deal.II/base/mpi.h>
+
 #include <Epetra_CrsMatrix.h>
 #include <dmumps_c.h>
 
@@ -8,6 +10,8 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace pneuma
@@ -23,6 +27,7 @@ namespace pneuma
       std::vector<double>    values;
       MUMPS_INT8             n = 0;
       Work                   work;
+      PivotOrder             order;
 
       void
       call(const int job)
@@ -68,6 +73,43 @@ namespace pneuma
             + ", INFOG(2) = " + std::to_string(id.infog[1]));
       }
 
+      /// Analysis of the pattern in irn_loc/jcn_loc. A pattern that
+      /// changed (contact's couplings) but kept its size first reuses the
+      /// last computed pivot order (ICNTL(7) = 1): only the symbolic
+      /// factorization is redone. If that order's estimated flops exceed
+      /// those it had on its own pattern by more than 10 %, a new order is
+      /// computed.
+      void
+      analyse()
+      {
+        const MPI_Comm comm = MPI_Comm_f2c(id.comm_fortran);
+        const bool host = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+        static_assert(std::is_same_v<MUMPS_INT, int>,
+                      "PivotOrder holds MUMPS_INT as int");
+        // The host holds the order; all ranks decide alike.
+        int reuse =
+          id.icntl[6] != 1
+          && (!host || static_cast<MUMPS_INT8>(order.position.size()) == id.n);
+        reuse = dealii::Utilities::MPI::min(reuse, comm);
+        if (reuse)
+          {
+            const int icntl7 = id.icntl[6];
+            id.icntl[6]      = 1;
+            id.perm_in       = host ? order.position.data() : nullptr;
+            call(1);
+            id.icntl[6] = icntl7;
+            id.perm_in  = nullptr;
+            // RINFOG(1): the analysis' estimate of the flops, on all ranks.
+            if (id.rinfog[0] <= 1.1 * order.flops)
+              return;
+          }
+        call(1);
+        ++work.orderings;
+        order.flops = id.rinfog[0];
+        if (host)
+          order.position.assign(id.sym_perm, id.sym_perm + id.n);
+      }
+
       /// Solve with the factors for @p nrhs right-hand sides of length
       /// @p n, column-major in @p rhs on the host (nullptr elsewhere),
       /// overwritten by the solutions (ICNTL(20) = ICNTL(21) = 0:
@@ -91,6 +133,18 @@ namespace pneuma
       if (data->id.icntl[6] != icntl7)
         data->analysed = false;
       data->id.icntl[6] = icntl7;
+    }
+
+    const SymmetricInertia::PivotOrder &
+    SymmetricInertia::pivot_order() const
+    {
+      return data->order;
+    }
+
+    void
+    SymmetricInertia::set_pivot_order(PivotOrder order)
+    {
+      data->order = std::move(order);
     }
 
     double
@@ -241,7 +295,7 @@ namespace pneuma
           // is only a hint to the analysis; the factors are exact for any
           // pattern.
           id.icntl[14] = id.n % 3 == 0 ? -3 : 0;
-          d.call(1); // analysis
+          d.analyse();
           d.analysed = true;
         }
       d.call(2); // factorization

@@ -230,6 +230,9 @@ namespace pneuma
       std::unique_ptr<SymmetricInertia> symmetric;
       /// The work of symmetric factorizations released by reset().
       SymmetricInertia::Work released_work;
+      /// The pivot order of the released factorization, for the next
+      /// (reset() follows a new sparsity pattern, often of the same size).
+      SymmetricInertia::PivotOrder released_order;
       void
       release_symmetric();
       /// The active factorization is the LDL^T.
