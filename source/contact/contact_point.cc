@@ -541,56 +541,6 @@ namespace pneuma
             y[a][c] = variable(9 + 3 * a + c, patch.nodes[a][c]);
       }
 
-      /**
-       * The energy and gradient of penalty_terms_section() alone (a
-       * residual without the tangent): first-order Sacado numbers in the
-       * reduced variables through one Newton step of the projection from
-       * the converged xi (Newton's error is squared, so the first
-       * derivatives are exact).
-       */
-      template <int n>
-      double
-      penalty_gradient_section(const MasterPatch                 &patch,
-                               const SlaveSection                &section,
-                               const std::array<Tensor<1, 3>, 2> &slave,
-                               const double                       eta,
-                               const double                       penalty,
-                               const double                       weight,
-                               const Point<2>                    &xi_converged,
-                               Vector<double>                    *gradient)
-      {
-        using AD = Sacado::Fad::SFad<double, n>;
-        AD                             x[3], a1[3], a2[3];
-        std::vector<std::array<AD, 3>> y;
-        seed_section_point(
-          patch,
-          section,
-          slave,
-          eta,
-          [](const unsigned int k, const double v) { return AD(n, k, v); },
-          x,
-          a1,
-          a2,
-          y);
-        AD xi[2] = {AD(xi_converged[0]), AD(xi_converged[1])};
-        newton_step(patch.degree, y, x, xi);
-        AD       normal[3];
-        const AD g =
-          gap(patch.degree, y, x, xi, patch.sign, 0., normal, a1, a2);
-        constexpr unsigned int n_full = n + 9;
-        if (gradient)
-          gradient->reinit(n_full);
-        if (g.val() >= 0.)
-          return 0.;
-        const AD energy = 0.5 * weight * penalty * g * g;
-        std::array<unsigned int, n_full> r;
-        std::array<double, n_full>       w;
-        section_variables<n_full>(eta, r, w);
-        if (gradient)
-          for (unsigned int i = 0; i < n_full; ++i)
-            (*gradient)(i) = w[i] * energy.dx(r[i]);
-        return energy.val();
-      }
     } // namespace
 
     namespace
@@ -701,66 +651,30 @@ namespace pneuma
       }
 
       /**
-       * The energy, gradient and Hessian of an elliptic-section point:
-       * the closed-form gradient of the gap (section_gap_gradient()) in
-       * first-order Sacado numbers through one Newton step of the
-       * projection; the Hessian of Pi = w eps/2 g^2 is the Jacobian of
-       * w eps g grad g. Variables of the result as penalty_terms_section().
+       * An elliptic-section point in numbers made by @p variable (doubles,
+       * or first-order Sacado numbers seeded in the reduced variables of
+       * section_variables()): one Newton step of the projection from the
+       * converged xi (it carries dxi/dv exactly), then the gap and its
+       * closed-form gradient (section_gap_gradient()).
        */
-      template <int n>
-      double
-      penalty_hessian_section(const MasterPatch                 &patch,
-                              const SlaveSection                &section,
-                              const std::array<Tensor<1, 3>, 2> &slave,
-                              const double                       eta,
-                              const double                       penalty,
-                              const double                       weight,
-                              const Point<2>                    &xi_converged,
-                              Vector<double>                    *gradient,
-                              FullMatrix<double>                &hessian)
+      template <typename Number, typename Variable>
+      void
+      section_point(const MasterPatch                 &patch,
+                    const SlaveSection                &section,
+                    const std::array<Tensor<1, 3>, 2> &slave,
+                    const double                       eta,
+                    const Point<2>                    &xi_converged,
+                    const Variable                    &variable,
+                    Number                            &g,
+                    std::vector<Number>               &grad)
       {
-        using AD = Sacado::Fad::SFad<double, n>;
-        AD                             x[3], a1[3], a2[3];
-        std::vector<std::array<AD, 3>> y;
-        seed_section_point(
-          patch,
-          section,
-          slave,
-          eta,
-          [](const unsigned int k, const double v) { return AD(n, k, v); },
-          x,
-          a1,
-          a2,
-          y);
-        AD xi[2] = {AD(xi_converged[0]), AD(xi_converged[1])};
+        Number                             x[3], a1[3], a2[3];
+        std::vector<std::array<Number, 3>> y;
+        seed_section_point(patch, section, slave, eta, variable, x, a1, a2, y);
+        Number xi[2] = {Number(xi_converged[0]), Number(xi_converged[1])};
         newton_step(patch.degree, y, x, xi);
-        AD              g;
-        std::vector<AD> grad;
         section_gap_gradient(
           patch.degree, y, x, a1, a2, xi, patch.sign, g, grad);
-        constexpr unsigned int n_full = n + 9;
-        if (gradient)
-          gradient->reinit(n_full);
-        hessian.reinit(n_full, n_full);
-        if (g.val() >= 0.)
-          return 0.;
-        std::array<unsigned int, n_full> r;
-        std::array<double, n_full>       w;
-        section_variables<n_full>(eta, r, w);
-        const AD s = weight * penalty * g;
-        for (unsigned int i = 0; i < n_full; ++i)
-          {
-            const AD gi = s * grad[r[i]];
-            if (gradient)
-              (*gradient)(i) = w[i] * gi.val();
-            for (unsigned int j = 0; j < n_full; ++j)
-              hessian(i, j) = w[i] * w[j] * gi.dx(r[j]);
-          }
-        for (unsigned int i = 0; i < n_full; ++i)
-          for (unsigned int j = 0; j < i; ++j)
-            hessian(i, j) = hessian(j, i) =
-              0.5 * (hessian(i, j) + hessian(j, i));
-        return 0.5 * weight * penalty * g.val() * g.val();
       }
     } // namespace
 
@@ -773,10 +687,11 @@ namespace pneuma
        * nodal values ((1 - eta) at node 0, eta at node 1), so the Sacado
        * numbers carry the reduced variables x, a1, a2 (9) and the master
        * nodes (@p n = 9 + 3 n_m) and the result is expanded to the slave's
-       * 18 nodal variables after. The gradient alone:
-       * penalty_gradient_section(); with the Hessian:
-       * penalty_hessian_section(). Variables of the result: slave (6),
-       * section a1, a2 at both nodes (12), master.
+       * 18 nodal variables after. The gap's gradient is a closed form
+       * (section_gap_gradient()): for a residual alone it is evaluated in
+       * doubles, with the tangent in first-order Sacado numbers. Variables
+       * of the result: slave (6), section a1, a2 at both nodes (12),
+       * master.
        */
       template <int n>
       double
@@ -790,24 +705,65 @@ namespace pneuma
                             Vector<double>                    *gradient,
                             FullMatrix<double>                *hessian)
       {
+        constexpr unsigned int           n_full = n + 9;
+        std::array<unsigned int, n_full> r;
+        std::array<double, n_full>       w;
+        section_variables<n_full>(eta, r, w);
+        if (gradient)
+          gradient->reinit(n_full);
+        if (hessian)
+          hessian->reinit(n_full, n_full);
         if (!hessian)
-          return penalty_gradient_section<n>(patch,
-                                             section,
-                                             slave,
-                                             eta,
-                                             penalty,
-                                             weight,
-                                             xi_converged,
-                                             gradient);
-        return penalty_hessian_section<n>(patch,
-                                          section,
-                                          slave,
-                                          eta,
-                                          penalty,
-                                          weight,
-                                          xi_converged,
-                                          gradient,
-                                          *hessian);
+          {
+            // The residual alone: the closed form in doubles.
+            double              g;
+            std::vector<double> grad;
+            section_point(
+              patch,
+              section,
+              slave,
+              eta,
+              xi_converged,
+              [](const unsigned int, const double v) { return v; },
+              g,
+              grad);
+            if (g >= 0.)
+              return 0.;
+            if (gradient)
+              for (unsigned int i = 0; i < n_full; ++i)
+                (*gradient)(i) = w[i] * weight * penalty * g * grad[r[i]];
+            return 0.5 * weight * penalty * g * g;
+          }
+        // With the tangent: the Hessian of Pi = w eps/2 g^2 is the
+        // Jacobian of w eps g grad g, read from first-order numbers.
+        using AD = Sacado::Fad::SFad<double, n>;
+        AD              g;
+        std::vector<AD> grad;
+        section_point(
+          patch,
+          section,
+          slave,
+          eta,
+          xi_converged,
+          [](const unsigned int k, const double v) { return AD(n, k, v); },
+          g,
+          grad);
+        if (g.val() >= 0.)
+          return 0.;
+        const AD s = weight * penalty * g;
+        for (unsigned int i = 0; i < n_full; ++i)
+          {
+            const AD gi = s * grad[r[i]];
+            if (gradient)
+              (*gradient)(i) = w[i] * gi.val();
+            for (unsigned int j = 0; j < n_full; ++j)
+              (*hessian)(i, j) = w[i] * w[j] * gi.dx(r[j]);
+          }
+        for (unsigned int i = 0; i < n_full; ++i)
+          for (unsigned int j = 0; j < i; ++j)
+            (*hessian)(i, j) = (*hessian)(j, i) =
+              0.5 * ((*hessian)(i, j) + (*hessian)(j, i));
+        return 0.5 * weight * penalty * g.val() * g.val();
       }
     } // namespace
 
