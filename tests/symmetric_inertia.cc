@@ -65,6 +65,34 @@ namespace
     return A;
   }
 
+  /// The 2D Laplacian of an m x m grid (5-point stencil) shifted by 0.3,
+  /// indefinite, with -0.01 couplings added where @p extra(i, j) or
+  /// @p extra(j, i) (none if @p extra is empty).
+  pneuma::LA::SparseMatrix
+  shifted_grid(
+    const global_dof_index                                         m,
+    const std::function<bool(global_dof_index, global_dof_index)> &extra = {})
+  {
+    return make_matrix(m * m, [&](global_dof_index i) {
+      std::vector<std::pair<global_dof_index, double>> e;
+      const global_dof_index                           a = i % m, c = i / m;
+      if (a > 0)
+        e.emplace_back(i - 1, -1.);
+      if (c > 0)
+        e.emplace_back(i - m, -1.);
+      e.emplace_back(i, 4. - 0.3);
+      if (a + 1 < m)
+        e.emplace_back(i + 1, -1.);
+      if (c + 1 < m)
+        e.emplace_back(i + m, -1.);
+      if (extra)
+        for (global_dof_index j = 0; j < m * m; ++j)
+          if (j != i && (extra(i, j) || extra(j, i)))
+            e.emplace_back(j, -0.01);
+      return e;
+    });
+  }
+
   bool
   check_count(const std::string     &name,
               const global_dof_index value,
@@ -246,21 +274,7 @@ main(int argc, char **argv)
   // (40 x 40 grid, 5-point stencil, shifted indefinite) differ in size
   // between AMD and METIS, and both solve it.
   {
-    const global_dof_index m    = 40;
-    const auto             grid = make_matrix(m * m, [&](global_dof_index i) {
-      std::vector<std::pair<global_dof_index, double>> e;
-      const global_dof_index                           a = i % m, c = i / m;
-      if (a > 0)
-        e.emplace_back(i - 1, -1.);
-      if (c > 0)
-        e.emplace_back(i - m, -1.);
-      e.emplace_back(i, 4. - 0.3);
-      if (a + 1 < m)
-        e.emplace_back(i + 1, -1.);
-      if (c + 1 < m)
-        e.emplace_back(i + m, -1.);
-      return e;
-    });
+    const auto         grid = shifted_grid(40);
     pneuma::LA::Vector b(grid.locally_owned_range_indices(), MPI_COMM_WORLD);
     b                      = 1.;
     double      entries[2] = {0., 0.}, residuals[2] = {0., 0.};
@@ -304,27 +318,6 @@ main(int argc, char **argv)
   // couplings' matrix is the worst conditioned: 3e-12).
   {
     const global_dof_index m = 40;
-    const auto             grid_with =
-      [&](
-        const std::function<bool(global_dof_index, global_dof_index)> &extra) {
-        return make_matrix(m * m, [&, extra](global_dof_index i) {
-          std::vector<std::pair<global_dof_index, double>> e;
-          const global_dof_index                           a = i % m, c = i / m;
-          if (a > 0)
-            e.emplace_back(i - 1, -1.);
-          if (c > 0)
-            e.emplace_back(i - m, -1.);
-          e.emplace_back(i, 4. - 0.3);
-          if (a + 1 < m)
-            e.emplace_back(i + 1, -1.);
-          if (c + 1 < m)
-            e.emplace_back(i + m, -1.);
-          for (global_dof_index j = 0; j < m * m; ++j)
-            if (j != i && (extra(i, j) || extra(j, i)))
-              e.emplace_back(j, -0.01);
-          return e;
-        });
-      };
     const auto none = [](global_dof_index, global_dof_index) { return false; };
     const auto short_couplings = [&](global_dof_index i, global_dof_index j) {
       return i % m == 5 && i / m < 5 && j == i + 2;
@@ -344,7 +337,7 @@ main(int argc, char **argv)
       none, short_couplings, far_couplings};
     for (unsigned int k = 0; k < 3; ++k)
       {
-        const auto         A = grid_with(extras[k]);
+        const auto         A = shifted_grid(m, extras[k]);
         pneuma::LA::Vector b(A.locally_owned_range_indices(), MPI_COMM_WORLD);
         b = 1.;
         pneuma::LA::Vector x(b), r(b);
