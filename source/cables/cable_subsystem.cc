@@ -57,6 +57,12 @@ namespace pneuma
     }
 
     void
+    CableSubsystem::add_locally_relevant(IndexSet &relevant)
+    {
+      relevant.add_indices(cables.all_dofs(relevant.size()));
+    }
+
+    void
     CableSubsystem::add_update_constraints(AffineConstraints<double> &c) const
     {
       cables.add_support_constraints(c);

@@ -192,7 +192,9 @@ namespace pneuma
                        const MPI_Comm                comm_)
     {
       comm     = comm_;
-      is_owner = Utilities::MPI::this_mpi_process(comm) == 0;
+      rank     = Utilities::MPI::this_mpi_process(comm);
+      n_ranks  = Utilities::MPI::n_mpi_processes(comm);
+      is_owner = rank == 0;
       first    = first_dof;
       bodies.clear();
       types::global_dof_index next = first;
@@ -325,6 +327,21 @@ namespace pneuma
       if (is_owner && n_cable_dofs > 0)
         owned.add_range(first, first + n_cable_dofs);
       return owned;
+    }
+
+    IndexSet
+    CableSystem::all_dofs(const types::global_dof_index size) const
+    {
+      IndexSet all(size);
+      if (n_cable_dofs > 0)
+        all.add_range(first, first + n_cable_dofs);
+      return all;
+    }
+
+    bool
+    CableSystem::assembles(const std::size_t element) const
+    {
+      return (element * n_ranks) / std::max<std::size_t>(n_cells(), 1) == rank;
     }
 
     void
@@ -509,13 +526,17 @@ namespace pneuma
       DynamicSparsityPattern          &dsp,
       const AffineConstraints<double> &constraints) const
     {
-      if (!is_owner)
-        return;
+      // The owner's rows hold every element's couplings; another rank
+      // also writes those of its share of the elements (assemble()), whose
+      // rows it must have in its pattern.
+      std::size_t index = 0;
       for (const auto &b : bodies)
         {
           std::vector<types::global_dof_index> dofs(b->fe->n_dofs_per_cell());
           for (const auto &cell : b->dof_handler.active_cell_iterators())
             {
+              if (!assembles(index++) && !is_owner)
+                continue;
               cell->get_dof_indices(dofs);
               for (auto &i : dofs)
                 i += b->offset;
@@ -614,16 +635,24 @@ namespace pneuma
                           LA::Vector                      *external) const
     {
       stage_prestress(t);
-      if (is_owner)
-        for (const auto &b : bodies)
+      // The elements are shared out over the ranks in contiguous ranges
+      // (every rank sees all cable unknowns, add_locally_relevant()): the
+      // solid beam's elements cost as much as a tenth of the membrane's
+      // cells at the target size of the waterbeam with cables, which the
+      // other ranks would otherwise wait for. The rows stay on rank 0.
+      std::size_t index = 0;
+      for (const auto &b : bodies)
+        {
+          const Vector<double> local_u = extract(*b, u);
           {
-            const Vector<double> local_u = extract(*b, u);
-            const unsigned int   n       = b->fe->n_dofs_per_cell();
-            FullMatrix<double>   cell_matrix(n, n);
-            Vector<double>       cell_residual(n), cell_external(n);
+            const unsigned int n = b->fe->n_dofs_per_cell();
+            FullMatrix<double> cell_matrix(n, n);
+            Vector<double>     cell_residual(n), cell_external(n);
             std::vector<types::global_dof_index> dofs(n);
             for (const auto &cell : b->dof_handler.active_cell_iterators())
               {
+                if (!assembles(index++))
+                  continue;
                 cell_matrix   = 0.;
                 cell_residual = 0.;
                 cell_external = 0.;
@@ -649,8 +678,12 @@ namespace pneuma
                                                          dofs,
                                                          *external);
               }
+          }
+          if (!is_owner)
+            continue;
 
-            // Dead end forces and the end moment.
+          // Dead end forces and the end moment.
+          {
             const CableDefinition &d = b->definition;
             if (d.has_end_forces && !b->start_dofs.empty())
               for (const auto &[f, x, end_dofs] :
@@ -709,6 +742,7 @@ namespace pneuma
                   }
               }
           }
+        }
       if (residual)
         residual->compress(VectorOperation::add);
       if (external)

@@ -47,6 +47,10 @@ namespace pneuma
                      const MPI_Comm                comm) override;
       void
       add_locally_owned(IndexSet &owned) const override;
+      /// Every rank sees all cable unknowns: it assembles a share of the
+      /// elements (CableSystem::assemble()).
+      void
+      add_locally_relevant(IndexSet &relevant) override;
       void
       add_update_constraints(AffineConstraints<double> &c) const override;
       void

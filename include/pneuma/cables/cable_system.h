@@ -9,7 +9,8 @@
  * rank holds the whole cable mesh (p4est does not distribute 1D meshes).
  * The cable unknowns follow the membrane unknowns in the global numbering:
  * cable k's dof i is global index first + offset_k + i. Rank 0 owns all
- * cable dofs and assembles the cable block; later couplings (contact) add
+ * cable dofs; every rank sees them (ghosts) and assembles a contiguous
+ * share of the elements into rank 0's rows; later couplings (contact) add
  * off-diagonal blocks to the same matrix.
  *
  * Unknowns per node: those of the cable's element (cable_element.h), the
@@ -132,6 +133,9 @@ namespace pneuma
       /// The cable dofs owned here (all on rank 0), in a set of @p size.
       IndexSet
       locally_owned_dofs(const types::global_dof_index size) const;
+      /// All cable dofs, in a set of @p size.
+      IndexSet
+      all_dofs(const types::global_dof_index size) const;
 
       /// Homogeneous constraints of the supported end dofs (for the Newton
       /// update).
@@ -157,7 +161,7 @@ namespace pneuma
                    const AffineConstraints<double> &constraints) const;
 
       /**
-       * Add the cable terms at @p u (ghosted, or owned here) to the
+       * Add the cable terms at @p u (ghosted: every cable unknown) to the
        * residual r = f_int - f_ext, the tangent and the external load
        * vector (each may be nullptr); compresses what it touched.
        */
@@ -268,6 +272,11 @@ namespace pneuma
                  Vector<double>                               *cell_external,
                  CableCellOutput *cell_output) const;
 
+      /// Does this rank assemble element @p element (numbered over all
+      /// bodies in mesh order)? Contiguous ranges, one per rank.
+      bool
+      assembles(const std::size_t element) const;
+
       /// The body's dofs of @p u (replicated local copy).
       Vector<double>
       extract(const Body &b, const LA::Vector &u) const;
@@ -276,6 +285,7 @@ namespace pneuma
       const loads::Loads                         &loads;
       MPI_Comm                                    comm     = MPI_COMM_SELF;
       bool                                        is_owner = true;
+      unsigned int                                rank = 0, n_ranks = 1;
       std::vector<std::unique_ptr<Body>>          bodies;
       types::global_dof_index                     first = 0, n_cable_dofs = 0;
       std::vector<std::pair<double, std::string>> pvd_records;
