@@ -8,7 +8,12 @@
 // root, and the quadratic rate at the end. (A penalty contact point thrown
 // through the membrane produced such a state, with |r| = 1e78, which the
 // watchdog used to take.) Also: a residual that is not finite at the
-// start is a failure, not an iterate.
+// start is a failure, not an iterate. And a failed watch resumes along the
+// direction saved with its state: r(u) = atan(u) from u = 1.5, where the
+// full Newton steps diverge; after the three watched steps the state
+// u = 1.5 comes back and the line search backtracks along its saved
+// direction from half the step, without solving at u = 1.5 again (6 linear
+// solves to the root, |r(1.5)| solved from once).
 
 #include <deal.II/base/mpi.h>
 
@@ -78,6 +83,32 @@ namespace
   private:
     double slope = 1.;
   };
+
+  /// r(u) = atan(u): Newton's full steps diverge from |u| > 1.39.
+  class Atan : public Wall
+  {
+  public:
+    void
+    assemble(const BorderedVector &u, BorderedVector &r) override
+    {
+      const double v = u.field[0];
+      atan_slope     = 1. / (1. + v * v);
+      r.field[0]     = std::atan(v);
+      r.field.compress(dealii::VectorOperation::insert);
+    }
+    void
+    solve_linear(const double,
+                 const BorderedVector &rhs,
+                 BorderedVector       &du) override
+    {
+      solved_from.push_back(std::abs(rhs.field[0]));
+      du.field[0] = rhs.field[0] / atan_slope;
+      du.field.compress(dealii::VectorOperation::insert);
+    }
+
+  private:
+    double atan_slope = 1.;
+  };
 } // namespace
 
 int
@@ -130,6 +161,33 @@ main(int argc, char **argv)
               failed.converged ? "yes" : "no",
               failed.failure_reason.c_str());
   ok &= !failed.converged && poisoned.solved_from.empty();
+
+  // A failed watch: back to u = 1.5, on along its saved direction.
+  Atan diverging;
+  u.field[0] = 1.5;
+  u.field.compress(dealii::VectorOperation::insert);
+  const auto   watched = newton.solve(diverging, u, quiet, false);
+  const double r_start = std::atan(1.5);
+  const auto   from_start =
+    std::count_if(diverging.solved_from.begin(),
+                  diverging.solved_from.end(),
+                  [&](const double r) { return r == r_start; });
+  std::printf("atan from u = 1.5: converged %s, %zu linear solves, %ld of "
+              "them from u = 1.5\n",
+              watched.converged ? "yes" : "no",
+              diverging.solved_from.size(),
+              static_cast<long>(from_start));
+  ok &= watched.converged;
+  ok &= pneuma_test::check("root u = 0 (|u| + 1)",
+                           std::abs(u.field[0]) + 1.,
+                           1.,
+                           1e-8);
+  ok &=
+    pneuma_test::check("linear solves", diverging.solved_from.size(), 6., 0.);
+  ok &= pneuma_test::check("solves from the restored state u = 1.5",
+                           from_start,
+                           1.,
+                           0.);
   std::printf("%s\n", ok ? "OK" : "FAILED");
   return ok ? 0 : 1;
 }

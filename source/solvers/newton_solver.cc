@@ -61,7 +61,10 @@ namespace pneuma
        * state, and the watch runs for `steps` more iterations. Progress
        * below the saved |r| ends it; otherwise the saved state comes back
        * and the line search must backtrack from it (the watch is barred
-       * until a step is accepted normally).
+       * until a step is accepted normally). The direction from the saved
+       * state is saved with it: the backtracking resumes along it at half
+       * the step, without solving for it again (its full step is the one
+       * the watch took, which failed the Armijo test).
        */
       class Watchdog
       {
@@ -80,15 +83,19 @@ namespace pneuma
                  && trial_norm <= max_watched_growth * r_norm;
         }
 
-        /// Take it: save the state unless a watch is already on.
+        /// Take it: save the state, its |r| and the direction @p du from
+        /// it, unless a watch is already on.
         void
-        start(const BorderedVector &u, const double r_norm)
+        start(const BorderedVector &u,
+              const double          r_norm,
+              const BorderedVector &du)
         {
           if (left > 0)
             return;
-          saved      = u;
-          saved_norm = r_norm;
-          left       = steps + 1;
+          saved           = u;
+          saved_norm      = r_norm;
+          saved_direction = du;
+          left            = steps + 1;
         }
 
         /**
@@ -118,12 +125,22 @@ namespace pneuma
         {
           return saved;
         }
+        double
+        saved_residual_norm() const
+        {
+          return saved_norm;
+        }
+        const BorderedVector &
+        saved_step() const
+        {
+          return saved_direction;
+        }
 
       private:
         unsigned int   steps, left = 0;
         bool           barred     = false;
         double         saved_norm = 0.;
-        BorderedVector saved;
+        BorderedVector saved, saved_direction;
       };
 
       /// Outcome of the line search along one Newton direction.
@@ -250,6 +267,9 @@ namespace pneuma
       // |du| of the last full, unwatched step (0: none), for the
       // predicted-update test.
       double last_full_update = 0.;
+      // The next line search resumes along the direction of a failed
+      // watch's saved state.
+      bool resume = false;
 
       // The caller's assembly at u serves the first iteration (at the
       // anchor of a shifted phase the shift term vanishes).
@@ -291,55 +311,69 @@ namespace pneuma
               return false;
             }
 
-          // 2. The Newton direction.
-          du = 0.;
-          residual *= -1.;
-          try
+          // 2. The Newton direction, or after a failed watch the one from
+          //    the state it restored.
+          double du_norm = 0.;
+          if (resume)
             {
-              problem.set_linear_tolerance(forcing_term(r_norm / r_ref));
-              problem.solve_linear(phase.shift, residual, du);
+              du      = watchdog.saved_step();
+              du_norm = du.l2_norm();
             }
-          catch (const std::exception &e)
+          else
             {
-              // The whole message (without deal.II's frame and stack
-              // trace) reaches the log and the failure reason.
-              std::string text = e.what();
-              const auto  info = text.find("Additional information:");
-              if (info != std::string::npos)
-                text = text.substr(info + 23);
-              text = text.substr(0, text.find("Stacktrace:"));
-              text = std::regex_replace(text, std::regex("-{3,}"), " ");
-              const std::string message = Utilities::trim(
-                std::regex_replace(text, std::regex("\\s+"), " "));
-              result.failure_reason = "linear solver failed: " + message;
-              if (print_table)
-                out << "    (linear solver: " << message << ")\n";
-              return false;
-            }
-          ++result.iterations;
-          const double du_norm = du.l2_norm();
-          if (!std::isfinite(du_norm))
-            {
-              result.failure_reason = "linear solver failed";
-              return false;
-            }
-          if (pure && du_norm <= update_tolerance * u.l2_norm()
-              && r_norm <= floor_update * tolerance)
-            {
-              if (print_table)
-                out << "    " << std::setw(4) << result.iterations
-                    << std::scientific << std::setprecision(3) << "  "
-                    << r_norm / r_ref << "  (|du|/|u| = "
-                    << du_norm / std::max(u.l2_norm(), 1e-300)
-                    << ": the update has vanished)" << std::defaultfloat
-                    << std::endl;
-              result.convergence_test = "update at the round-off floor";
-              return true;
+              du = 0.;
+              residual *= -1.;
+              try
+                {
+                  problem.set_linear_tolerance(forcing_term(r_norm / r_ref));
+                  problem.solve_linear(phase.shift, residual, du);
+                }
+              catch (const std::exception &e)
+                {
+                  // The whole message (without deal.II's frame and stack
+                  // trace) reaches the log and the failure reason.
+                  std::string text = e.what();
+                  const auto  info = text.find("Additional information:");
+                  if (info != std::string::npos)
+                    text = text.substr(info + 23);
+                  text = text.substr(0, text.find("Stacktrace:"));
+                  text = std::regex_replace(text, std::regex("-{3,}"), " ");
+                  const std::string message = Utilities::trim(
+                    std::regex_replace(text, std::regex("\\s+"), " "));
+                  result.failure_reason = "linear solver failed: " + message;
+                  if (print_table)
+                    out << "    (linear solver: " << message << ")\n";
+                  return false;
+                }
+              ++result.iterations;
+              du_norm = du.l2_norm();
+              if (!std::isfinite(du_norm))
+                {
+                  result.failure_reason = "linear solver failed";
+                  return false;
+                }
+              if (pure && du_norm <= update_tolerance * u.l2_norm()
+                  && r_norm <= floor_update * tolerance)
+                {
+                  if (print_table)
+                    out << "    " << std::setw(4) << result.iterations
+                        << std::scientific << std::setprecision(3) << "  "
+                        << r_norm / r_ref << "  (|du|/|u| = "
+                        << du_norm / std::max(u.l2_norm(), 1e-300)
+                        << ": the update has vanished)" << std::defaultfloat
+                        << std::endl;
+                  result.convergence_test = "update at the round-off floor";
+                  return true;
+                }
             }
 
-          // 3. Line search (with the watchdog) along du.
+          // 3. Line search (with the watchdog) along du; resumed at half the
+          //    step after a failed watch.
           Step step;
-          for (unsigned int ls = 0; ls <= (line_search ? max_line_search : 0);
+          if (resume)
+            step.alpha = backtrack;
+          for (unsigned int ls = resume ? 1 : 0;
+               ls <= (line_search ? max_line_search : 0);
                ++ls, step.alpha *= backtrack)
             {
               u_trial = u;
@@ -355,7 +389,7 @@ namespace pneuma
                 }
               if (ls == 0 && watchdog.may_take(step.norm, r_norm))
                 {
-                  watchdog.start(u, r_norm);
+                  watchdog.start(u, r_norm, du);
                   step.accepted = step.watched = true;
                   break;
                 }
@@ -418,15 +452,20 @@ namespace pneuma
               return true;
             }
           last_full_update = full ? du_norm : 0.;
+          resume           = false;
           if (watchdog.failed(r_norm))
             {
+              // The residual vector is that of the last iterate until the
+              // resumed line search accepts a step (it is not needed
+              // before).
               u                = watchdog.saved_state();
-              r_norm           = evaluate(u, residual);
+              r_norm           = watchdog.saved_residual_norm();
               last_full_update = 0.;
+              resume           = true;
               if (print_table)
                 out << "    (watchdog: back to |r|/|r_ref| = "
                     << std::scientific << std::setprecision(3) << r_norm / r_ref
-                    << std::defaultfloat << ")\n";
+                    << std::defaultfloat << ", on along its step)\n";
               continue;
             }
           if (pure)
