@@ -170,7 +170,10 @@ namespace pneuma
       const bool want_matrix = request.tangent != nullptr;
       const bool want_vector =
         request.residual != nullptr || request.external != nullptr;
-      const double t = request.time;
+      // The applied loads alone (the reactions' statistics) need no
+      // stresses.
+      const bool   want_stress = want_matrix || request.residual != nullptr;
+      const double t           = request.time;
       loads.set_time(t);
       const Tensor<1, 3> g =
         loaded && loads.has_gravity() ? loads.gravity(t) : Tensor<1, 3>();
@@ -267,7 +270,8 @@ namespace pneuma
             C[1][1] = a1 * a1;
             SymmetricTensor<2, 2> S;
             SymmetricTensor<4, 2> D;
-            material.law->evaluate(C, S, D);
+            if (want_stress)
+              material.law->evaluate(C, S, D);
             const double dA  = P.JxW;
             const double HdA = H * dA;
 

@@ -960,15 +960,18 @@ namespace pneuma
       // loads of the cell terms (chambers) count as applied loads.
       LA::Vector      residual = model.make_field(), ext = model.make_field();
       AssemblyRequest request;
-      request.time     = model.current_time;
-      request.residual = &residual;
-      request.external = &ext;
+      request.time = model.current_time;
+      // With contact or ties the support residual replaces this one
+      // (below): only the applied loads are assembled here.
+      const bool support_residual = needs_support_residual();
+      request.residual            = support_residual ? nullptr : &residual;
+      request.external            = &ext;
       assembler->assemble(u, model.kinematic_constraints(), request);
       for (const auto *terms : cell_terms)
         terms->add_loads(u, model.kinematic_constraints(), residual, ext);
       // With contact, cables also press on held membrane dofs: the whole
       // residual there is the support's force.
-      if (needs_support_residual())
+      if (support_residual)
         residual = model.support_residual();
       reaction.fill(0.);
       applied.fill(0.);
