@@ -80,7 +80,8 @@ namespace
       return 0.;
     }
 
-  private:
+  protected:
+    /// dr/du at the last assembled state (solve_linear() divides by it).
     double slope = 1.;
   };
 
@@ -92,22 +93,10 @@ namespace
     assemble(const BorderedVector &u, BorderedVector &r) override
     {
       const double v = u.field[0];
-      atan_slope     = 1. / (1. + v * v);
+      slope          = 1. / (1. + v * v);
       r.field[0]     = std::atan(v);
       r.field.compress(dealii::VectorOperation::insert);
     }
-    void
-    solve_linear(const double,
-                 const BorderedVector &rhs,
-                 BorderedVector       &du) override
-    {
-      solved_from.push_back(std::abs(rhs.field[0]));
-      du.field[0] = rhs.field[0] / atan_slope;
-      du.field.compress(dealii::VectorOperation::insert);
-    }
-
-  private:
-    double atan_slope = 1.;
   };
 } // namespace
 

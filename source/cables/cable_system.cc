@@ -644,104 +644,100 @@ namespace pneuma
       for (const auto &b : bodies)
         {
           const Vector<double> local_u = extract(*b, u);
-          {
-            const unsigned int n = b->fe->n_dofs_per_cell();
-            FullMatrix<double> cell_matrix(n, n);
-            Vector<double>     cell_residual(n), cell_external(n);
-            std::vector<types::global_dof_index> dofs(n);
-            for (const auto &cell : b->dof_handler.active_cell_iterators())
-              {
-                if (!assembles(index++))
-                  continue;
-                cell_matrix   = 0.;
-                cell_residual = 0.;
-                cell_external = 0.;
-                cell_terms(*b,
-                           cell,
-                           t,
-                           local_u,
-                           tangent ? &cell_matrix : nullptr,
-                           &cell_residual,
-                           &cell_external,
-                           nullptr);
-                cell->get_dof_indices(dofs);
-                for (auto &i : dofs)
-                  i += b->offset;
-                LA::distribute(constraints,
-                               cell_matrix,
-                               cell_residual,
-                               dofs,
-                               tangent,
-                               residual);
-                if (external)
-                  constraints.distribute_local_to_global(cell_external,
-                                                         dofs,
-                                                         *external);
-              }
-          }
+          const unsigned int   n       = b->fe->n_dofs_per_cell();
+          FullMatrix<double>   cell_matrix(n, n);
+          Vector<double>       cell_residual(n), cell_external(n);
+          std::vector<types::global_dof_index> dofs(n);
+          for (const auto &cell : b->dof_handler.active_cell_iterators())
+            {
+              if (!assembles(index++))
+                continue;
+              cell_matrix   = 0.;
+              cell_residual = 0.;
+              cell_external = 0.;
+              cell_terms(*b,
+                         cell,
+                         t,
+                         local_u,
+                         tangent ? &cell_matrix : nullptr,
+                         &cell_residual,
+                         &cell_external,
+                         nullptr);
+              cell->get_dof_indices(dofs);
+              for (auto &i : dofs)
+                i += b->offset;
+              LA::distribute(constraints,
+                             cell_matrix,
+                             cell_residual,
+                             dofs,
+                             tangent,
+                             residual);
+              if (external)
+                constraints.distribute_local_to_global(cell_external,
+                                                       dofs,
+                                                       *external);
+            }
           if (!is_owner)
             continue;
 
           // Dead end forces and the end moment.
-          {
-            const CableDefinition &d = b->definition;
-            if (d.has_end_forces && !b->start_dofs.empty())
-              for (const auto &[f, x, end_dofs] :
-                   {std::make_tuple(d.start_force.get(),
-                                    b->start_point,
-                                    &b->start_dofs),
-                    std::make_tuple(d.end_force.get(),
-                                    b->end_point,
-                                    &b->end_dofs)})
-                {
-                  f->set_time(t);
-                  Vector<double>                       force(3);
-                  std::vector<types::global_dof_index> fdofs(3);
-                  for (unsigned int c = 0; c < 3; ++c)
-                    {
-                      force[c] = f->value(x, c);
-                      fdofs[c] = b->offset + (*end_dofs)[c];
-                    }
-                  if (external)
-                    constraints.distribute_local_to_global(force,
-                                                           fdofs,
-                                                           *external);
-                  force *= -1.;
-                  if (residual)
-                    constraints.distribute_local_to_global(force,
-                                                           fdofs,
-                                                           *residual);
-                }
-            d.end_moment->set_time(t);
-            const Tensor<1, 3> M = b->end_moment();
-            if (M.norm() > 0.)
+          const CableDefinition &d = b->definition;
+          if (d.has_end_forces && !b->start_dofs.empty())
+            for (const auto &[f, x, end_dofs] :
+                 {std::make_tuple(d.start_force.get(),
+                                  b->start_point,
+                                  &b->start_dofs),
+                  std::make_tuple(d.end_force.get(),
+                                  b->end_point,
+                                  &b->end_dofs)})
               {
-                const unsigned int nc = b->n_components;
-                Vector<double>     node_reference, node_u;
-                b->end_node(local_u, node_reference, node_u);
-                FullMatrix<double> node_matrix(nc, nc);
-                Vector<double>     node_residual(nc), node_external(nc);
-                b->element.end_moment_terms(
-                  M, node_reference, node_u, &node_matrix, &node_residual);
-                std::vector<types::global_dof_index> mdofs(nc);
-                for (unsigned int c = 0; c < nc; ++c)
-                  mdofs[c] = b->offset + b->end_dofs[c];
-                LA::distribute(constraints,
-                               node_matrix,
-                               node_residual,
-                               mdofs,
-                               tangent,
-                               residual);
-                if (external)
+                f->set_time(t);
+                Vector<double>                       force(3);
+                std::vector<types::global_dof_index> fdofs(3);
+                for (unsigned int c = 0; c < 3; ++c)
                   {
-                    node_external = node_residual;
-                    node_external *= -1.;
-                    constraints.distribute_local_to_global(node_external,
-                                                           mdofs,
-                                                           *external);
+                    force[c] = f->value(x, c);
+                    fdofs[c] = b->offset + (*end_dofs)[c];
                   }
+                if (external)
+                  constraints.distribute_local_to_global(force,
+                                                         fdofs,
+                                                         *external);
+                force *= -1.;
+                if (residual)
+                  constraints.distribute_local_to_global(force,
+                                                         fdofs,
+                                                         *residual);
               }
-          }
+          d.end_moment->set_time(t);
+          const Tensor<1, 3> M = b->end_moment();
+          if (M.norm() > 0.)
+            {
+              const unsigned int nc = b->n_components;
+              Vector<double>     node_reference, node_u;
+              b->end_node(local_u, node_reference, node_u);
+              FullMatrix<double> node_matrix(nc, nc);
+              Vector<double>     node_residual(nc), node_external(nc);
+              b->element.end_moment_terms(
+                M, node_reference, node_u, &node_matrix, &node_residual);
+              std::vector<types::global_dof_index> mdofs(nc);
+              for (unsigned int c = 0; c < nc; ++c)
+                mdofs[c] = b->offset + b->end_dofs[c];
+              LA::distribute(constraints,
+                             node_matrix,
+                             node_residual,
+                             mdofs,
+                             tangent,
+                             residual);
+              if (external)
+                {
+                  node_external = node_residual;
+                  node_external *= -1.;
+                  constraints.distribute_local_to_global(node_external,
+                                                         mdofs,
+                                                         *external);
+                }
+            }
         }
       if (residual)
         residual->compress(VectorOperation::add);
