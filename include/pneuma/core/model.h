@@ -19,6 +19,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/affine_constraints.h>
 
+#include <pneuma/core/constraint_distribution.h>
 #include <pneuma/core/linear_algebra.h>
 #include <pneuma/core/subsystem.h>
 #include <pneuma/loads/loads.h>
@@ -437,6 +438,11 @@ namespace pneuma
     apply_kinematic_constraints(LA::Vector &field);
     void
     make_constraints();
+    /// @p result = C^T @p r with C the kinematic constraints: the force on
+    /// each dependent dof moved to its masters, the dependent entries
+    /// zero (owned vectors).
+    void
+    condense_kinematic(const LA::Vector &r, LA::Vector &result) const;
 
     MPI_Comm                                comm;
     dealii::ConditionalOStream              pcout;
@@ -450,6 +456,8 @@ namespace pneuma
 
     dealii::IndexSet                  owned, relevant;
     dealii::AffineConstraints<double> kinematic, update_constraints;
+    /// update_constraints.distribute() with its communication planned.
+    ConstraintDistribution update_distribution;
     /// Some rank has kinematic constraints (the same on every rank).
     bool any_kinematic = false;
     /// The tangent, and the regularisation matrix L: empty (0 rows) until
