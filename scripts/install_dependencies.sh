@@ -13,7 +13,7 @@
 # xvfb, for the pictures of the scene scripts (about 1 GB; replaces
 # python3-vtk9 by python3-paraview).
 set -euo pipefail
-packages=(build-essential cmake ccache libdeal.ii-dev libmumps-dev numdiff
+packages=(build-essential cmake ccache libdeal.ii-dev libmumps-dev libmetis-dev numdiff
           libopenblas0-pthread
           gmsh openmpi-bin time python3 python3-matplotlib
           clang-format)

@@ -13,8 +13,14 @@
 //   vectors gathered to MUMPS and back, against the LU of Amesos_Mumps
 //   (residuals and the difference of the two solutions); "automatic"
 //   picks LDLT for these and LU for a non-symmetric matrix;
-// - the Ordering entry reaches the LDL^T (AMD and METIS give factors of
-//   different sizes for a 2D Laplacian, and both solve it);
+// - the Ordering entry reaches the LDL^T (AMD, PORD and METIS give
+//   factors of different sizes for a 2D Laplacian, and all solve it;
+//   METIS is pneuma's own call of METIS_NodeND, as Debian's MUMPS has no
+//   METIS and its ICNTL(7) = 5 would be PORD's order);
+// - the nested dissection of a graph of nodes with three unknowns each
+//   (solvers/nested_dissection.h): a permutation with each node's
+//   unknowns consecutive, the same on 1 and 2 ranks (its checksum is in
+//   the output);
 // - the pivot order is kept for a new pattern of the same size if its
 //   estimated flops stay within 10 %, and computed anew otherwise;
 // - factorization reuse, LDL^T and LU: a nearby matrix solved by GMRES on
@@ -27,6 +33,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <pneuma/solvers/linear_solver.h>
+#include <pneuma/solvers/nested_dissection.h>
 #include <pneuma/solvers/symmetric_inertia.h>
 
 #include "test_tools.h"
@@ -34,6 +41,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <vector>
 
 namespace
 {
@@ -272,14 +280,14 @@ main(int argc, char **argv)
   }
   // The ordering entry reaches the LDL^T: the factors of a 2D Laplacian
   // (40 x 40 grid, 5-point stencil, shifted indefinite) differ in size
-  // between AMD and METIS, and both solve it.
+  // between AMD, PORD and METIS, and all solve it.
   {
     const auto         grid = shifted_grid(40);
     pneuma::LA::Vector b(grid.locally_owned_range_indices(), MPI_COMM_WORLD);
     b                      = 1.;
-    double      entries[2] = {0., 0.}, residuals[2] = {0., 0.};
-    const char *orderings[2] = {"amd", "metis"};
-    for (unsigned int k = 0; k < 2; ++k)
+    double      entries[3] = {0., 0., 0.}, residuals[3] = {0., 0., 0.};
+    const char *orderings[3] = {"amd", "pord", "metis"};
+    for (unsigned int k = 0; k < 3; ++k)
       {
         pneuma::solvers::LinearSolver solver;
         dealii::ParameterHandler      prm;
@@ -296,17 +304,77 @@ main(int argc, char **argv)
         residuals[k] = r.l2_norm() / b.l2_norm();
         entries[k]   = solver.factor_entries();
       }
-    const bool pass =
-      entries[0] != entries[1] && residuals[0] < 1e-12 && residuals[1] < 1e-12;
-    ok &= pass;
+    const bool differ = entries[0] != entries[2] && entries[1] != entries[2];
+    const bool solved =
+      residuals[0] < 1e-12 && residuals[1] < 1e-12 && residuals[2] < 1e-12;
+    ok &= differ && solved;
     if (root)
-      std::printf("ordering: LDL^T factor entries amd %.0f, metis %.0f "
-                  "(differ: %s), residuals < 1e-12: %s %s\n",
+      std::printf("ordering: LDL^T factor entries amd %.0f, pord %.0f, metis "
+                  "%.0f (metis differs from both: %s), residuals < 1e-12: %s "
+                  "%s\n",
                   entries[0],
                   entries[1],
-                  entries[0] != entries[1] ? "yes" : "no",
-                  residuals[0] < 1e-12 && residuals[1] < 1e-12 ? "yes" : "no",
-                  pass ? "PASS" : "FAIL");
+                  entries[2],
+                  differ ? "yes" : "no",
+                  solved ? "yes" : "no",
+                  differ && solved ? "PASS" : "FAIL");
+  }
+
+  // METIS' nested dissection of a graph of nodes, three unknowns each (a
+  // 30 x 30 grid of nodes, 9-point stencil, every unknown of a node
+  // coupled with every unknown of its neighbours): a permutation of
+  // 1..n keeping each node's unknowns consecutive, and the same order on
+  // any number of ranks (the checksum sum_i i * position(i) is printed).
+  {
+    const int  k = 30, n = 3 * k * k;
+    const auto rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+    const auto n_ranks =
+      dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    std::vector<int> rows, columns;
+    // Rank r holds the upper triangle of its share of the node rows.
+    for (int v = 0; v < k * k; ++v)
+      if (static_cast<unsigned int>(v) % n_ranks == rank)
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx)
+            {
+              const int x = v % k + dx, y = v / k + dy;
+              if (x < 0 || y < 0 || x >= k || y >= k)
+                continue;
+              const int w = y * k + x;
+              for (int a = 0; a < 3; ++a)
+                for (int c = 0; c < 3; ++c)
+                  if (3 * w + c >= 3 * v + a)
+                    {
+                      rows.push_back(3 * v + a + 1);
+                      columns.push_back(3 * w + c + 1);
+                    }
+            }
+    const std::vector<int> position = pneuma::solvers::nested_dissection(
+      MPI_COMM_WORLD, n, rows.data(), columns.data(), rows.size(), 3);
+    if (root)
+      {
+        std::vector<int> sorted(position);
+        std::sort(sorted.begin(), sorted.end());
+        bool permutation = static_cast<int>(sorted.size()) == n;
+        for (int i = 0; permutation && i < n; ++i)
+          permutation = sorted[i] == i + 1;
+        bool blocks = permutation;
+        for (int v = 0; blocks && v < n / 3; ++v)
+          blocks = position[3 * v] % 3 == 1
+                   && position[3 * v + 1] == position[3 * v] + 1
+                   && position[3 * v + 2] == position[3 * v] + 2;
+        long long checksum = 0;
+        for (int i = 0; permutation && i < n; ++i)
+          checksum += static_cast<long long>(i + 1) * position[i];
+        ok &= permutation && blocks;
+        std::printf("nested dissection of %d nodes x 3: permutation %s, "
+                    "node blocks consecutive %s, checksum %lld %s\n",
+                    n / 3,
+                    permutation ? "yes" : "no",
+                    blocks ? "yes" : "no",
+                    checksum,
+                    permutation && blocks ? "PASS" : "FAIL");
+      }
   }
 
   // The pivot order across patterns (SymmetricInertia::PivotOrder): the

@@ -60,11 +60,16 @@ namespace pneuma
         direct_settings.ordering,
         "Fill-reducing ordering of MUMPS (ICNTL(7)). amf (approximate "
         "minimum fill) has the cheapest analysis (benchmarks/"
-        "inflated_cylinder/results.md); metis orders large membranes for "
-        "about 25 % less factorization work (the waterbeam at 158k "
-        "unknowns: 7.7 instead of 9.9 GFlop) for an analysis of about two "
-        "factorizations, worth it where one sparsity pattern serves many "
-        "Newton iterations (parameter_files/waterbeam_cables.prm).",
+        "inflated_cylinder/results.md); metis is METIS' nested dissection "
+        "of the graph of the nodes, computed by pneuma and given to MUMPS "
+        "as its pivot order (Debian's MUMPS has no METIS): at the "
+        "waterbeam's 158k unknowns 5.3 instead of 8.4 GFlop per LDL^T "
+        "(amf) for about 0.25 s of analysis, worth it where one sparsity "
+        "pattern "
+        "serves several Newton iterations (parameter_files/"
+        "waterbeam_cables.prm). pord, scotch and auto are MUMPS' own "
+        "(scotch and auto fall back to MUMPS' automatic choice where it "
+        "lacks them).",
         Patterns::Selection("metis|amd|amf|qamd|scotch|pord|auto"));
       prm.add_parameter(
         "Factorization",

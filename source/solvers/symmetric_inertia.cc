@@ -1,3 +1,4 @@
+#include <pneuma/solvers/nested_dissection.h>
 #include <pneuma/solvers/symmetric_inertia.h>
 
 #include <deal.II/base/mpi.h>
@@ -103,7 +104,30 @@ namespace pneuma
             if (id.rinfog[0] <= 1.1 * order.flops)
               return;
           }
-        call(1);
+        if (id.icntl[6] == 5)
+          {
+            // METIS, which Debian's MUMPS lacks (it would fall back to
+            // PORD): its nested dissection on the host, given to MUMPS as
+            // the pivot order.
+            const auto       start = std::chrono::steady_clock::now();
+            std::vector<int> position =
+              nested_dissection(comm,
+                                id.n,
+                                id.irn_loc,
+                                id.jcn_loc,
+                                static_cast<std::size_t>(id.nnz_loc),
+                                id.n % 3 == 0 ? 3 : 1);
+            work.analysis_seconds += std::chrono::duration<double>(
+                                       std::chrono::steady_clock::now() - start)
+                                       .count();
+            id.icntl[6] = 1;
+            id.perm_in  = host ? position.data() : nullptr;
+            call(1);
+            id.icntl[6] = 5;
+            id.perm_in  = nullptr;
+          }
+        else
+          call(1);
         ++work.orderings;
         order.flops = id.rinfog[0];
         if (host)
@@ -178,9 +202,9 @@ namespace pneuma
       // ICNTL(24): detect null pivots (or, without a threshold, fail on
       // them).
       id.icntl[23] = zero_pivot_threshold > 0. ? 1 : 0;
-      // ICNTL(7) = 2: the approximate minimum fill ordering, as for the
-      // Newton solves (METIS's analysis costs several factorizations on
-      // membrane meshes, benchmarks/inflated_cylinder/results.md).
+      // ICNTL(7) = 2: the approximate minimum fill ordering, the default
+      // of the Newton solves (the cheapest analysis,
+      // benchmarks/inflated_cylinder/results.md).
       id.icntl[6] = 2;
       // ICNTL(14): 10 % over the analysis' workspace estimate (MUMPS'
       // default 20 % held 24 MB that the cylinder at 47k cells never used;
@@ -290,10 +314,12 @@ namespace pneuma
           // ICNTL(15) = -3: the unknowns come in blocks of three (the
           // displacement components of a node, a cable's directors), so
           // the ordering works on the graph of the nodes, a third of the
-          // size (MUMPS 5.5 user guide, ICNTL(15)): METIS' analysis of the
-          // waterbeam at 158k unknowns takes 0.9 s instead of 4.3 s. It
-          // is only a hint to the analysis; the factors are exact for any
-          // pattern.
+          // size (MUMPS 5.5 user guide, ICNTL(15)): MUMPS' own nested
+          // dissection (PORD, as Debian builds it) of the waterbeam at
+          // 158k unknowns takes 0.9 s instead of 4.3 s. It is only a hint
+          // to the analysis; the factors are exact for any pattern. (The
+          // metis ordering compresses the graph itself,
+          // nested_dissection.h.)
           id.icntl[14] = id.n % 3 == 0 ? -3 : 0;
           d.analyse();
           d.analysed = true;
