@@ -488,9 +488,9 @@ namespace pneuma
       // global partition (membrane and cable dofs) on every rank, else
       // made anew: a new Trilinos vector per chamber and pass was 2 % of
       // the waterbeam's run (Figure 11).
-      const auto has_layout = [&](const LA::Vector &q) {
-        return q.size() == u.size()
-               && q.locally_owned_elements() == u.locally_owned_elements();
+      const IndexSet owned      = u.locally_owned_elements();
+      const auto     has_layout = [&](const LA::Vector &q) {
+        return q.size() == u.size() && q.locally_owned_elements() == owned;
       };
       bool reuse = true;
       if (with_vectors)
@@ -514,9 +514,9 @@ namespace pneuma
             }
           else
             {
-              m.q.reinit(u.locally_owned_elements(), comm);
+              m.q.reinit(owned, comm);
               if (loads[c].liquid)
-                m.q_liquid.reinit(u.locally_owned_elements(), comm);
+                m.q_liquid.reinit(owned, comm);
             }
         }
     }

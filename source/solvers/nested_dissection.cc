@@ -1,5 +1,7 @@
 #include <pneuma/solvers/nested_dissection.h>
 
+#include <deal.II/base/mpi.h>
+
 #include <algorithm>
 #include <cstdint>
 #include <metis.h>
@@ -37,33 +39,14 @@ namespace pneuma
       std::sort(edges.begin(), edges.end());
       edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
 
-      int rank = 0, n_ranks = 1;
-      MPI_Comm_rank(comm, &rank);
-      MPI_Comm_size(comm, &n_ranks);
-      const int        n_local = static_cast<int>(edges.size());
-      std::vector<int> counts(rank == 0 ? n_ranks : 0),
-        offsets(rank == 0 ? n_ranks : 0);
-      MPI_Gather(&n_local, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
-      std::size_t total = 0;
-      if (rank == 0)
-        for (int r = 0; r < n_ranks; ++r)
-          {
-            offsets[r] = static_cast<int>(total);
-            total += counts[r];
-          }
-      std::vector<std::int64_t> all(total);
-      MPI_Gatherv(edges.data(),
-                  n_local,
-                  MPI_INT64_T,
-                  all.data(),
-                  counts.data(),
-                  offsets.data(),
-                  MPI_INT64_T,
-                  0,
-                  comm);
-      if (rank != 0)
+      // All ranks' edges on the host.
+      const auto gathered = dealii::Utilities::MPI::gather(comm, edges, 0);
+      if (dealii::Utilities::MPI::this_mpi_process(comm) != 0)
         return {};
       std::vector<std::int64_t>().swap(edges);
+      std::vector<std::int64_t> all;
+      for (const auto &part : gathered)
+        all.insert(all.end(), part.begin(), part.end());
       std::sort(all.begin(), all.end());
       all.erase(std::unique(all.begin(), all.end()), all.end());
 
