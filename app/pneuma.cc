@@ -11,8 +11,8 @@
 #include <pneuma/core/collective_error.h>
 #include <pneuma/core/input_error.h>
 #include <pneuma/core/interrupt.h>
-#include <pneuma/core/simulator.h>
 #include <pneuma/core/threads.h>
+#include <pneuma/simulator/simulator.h>
 
 #include <filesystem>
 #include <fstream>

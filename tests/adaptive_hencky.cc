@@ -12,7 +12,7 @@
 
 #include "test_tools.h"
 
-#include <pneuma/core/simulator.h>
+#include <pneuma/simulator/simulator.h>
 
 #include <cmath>
 #include <cstdio>

@@ -1,8 +1,8 @@
 // Branch switching at a bifurcation (Stability/Branch switching,
-// solvers/load_path.h, doc/verification.md "Branch switching"): two
-// neo-Hookean balloons (unit spheres, mu H/R = 1000 Pa) connected into one
-// chamber group and inflated by one prescribed total volume, without
-// imperfection, from the mean stretch 1 to 2 (l = 1 + t). The symmetric
+// strategies/static_load_path/critical_points.h, doc/verification.md "Branch
+// switching"): two neo-Hookean balloons (unit spheres, mu H/R = 1000 Pa)
+// connected into one chamber group and inflated by one prescribed total volume,
+// without imperfection, from the mean stretch 1 to 2 (l = 1 + t). The symmetric
 // path bifurcates at the pressure maximum of one balloon, l = 7^(1/6) =
 // 1.383088; the path is switched there onto the asymmetric branch (one
 // balloon grows past the maximum, the other shrinks back), which is stable.

@@ -6,7 +6,7 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <pneuma/core/simulator.h>
+#include <pneuma/simulator/simulator.h>
 
 #include <cmath>
 #include <string>

@@ -13,7 +13,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <pneuma/core/input_layout.h>
-#include <pneuma/core/simulator.h>
+#include <pneuma/simulator/simulator.h>
 
 #include <cmath>
 #include <cstdio>

@@ -24,7 +24,7 @@
 #include "test_paths.h"
 #include "test_tools.h"
 
-#include <pneuma/core/simulator.h>
+#include <pneuma/simulator/simulator.h>
 
 #include <array>
 #include <cmath>

@@ -1,5 +1,4 @@
 #include <pneuma/cables/cable_subsystem.h>
-#include <pneuma/contact/contact_subsystem.h>
 #include <pneuma/core/input_error.h>
 #include <pneuma/core/input_layout.h>
 #include <pneuma/core/model.h>
@@ -89,6 +88,12 @@ namespace pneuma
                              LA::SparseMatrix                &M) const
     {
       cables.assemble_mass(constraints, M);
+    }
+
+    void
+    CableSubsystem::add_lumped_mass(LA::Vector &m) const
+    {
+      cables.lumped_mass(m);
     }
 
     void
@@ -233,15 +238,9 @@ namespace pneuma
       // The largest axial force at the current state, so that a
       // prestress-driven step without external load has a force scale.
       double n = 0.;
-      for (const auto &r : cables.reports(model.current_time, field))
+      for (const auto &r : cables.reports(model.time(), field))
         n = std::max({n, std::abs(r.max_force), std::abs(r.min_force)});
       return Utilities::MPI::max(n, model.mpi_communicator());
-    }
-
-    bool
-    CableSubsystem::needs_support_residual() const
-    {
-      return model.find<contact::ContactSubsystem>() != nullptr;
     }
 
     void
@@ -251,13 +250,11 @@ namespace pneuma
       using S            = Statistics;
       constexpr auto all = S::all, report = S::report, summary = S::summary;
       constexpr auto root = S::Reduction::root;
-      // The reports exist on rank 0, which owns the cable dofs. With
-      // contact, the end reactions take the contact forces too.
+      // The reports exist on rank 0, which owns the cable dofs; the end
+      // reactions are the model's support residual (with contact, the
+      // contact forces on the end too).
       auto reports =
-        cables.reports(model.current_time,
-                       field,
-                       needs_support_residual() ? &model.support_residual()
-                                                : nullptr);
+        cables.reports(model.time(), field, &model.support_residual());
       reports.resize(parameters.size());
       statistics.add_count(StatisticsGroup::run(),
                            "cable_elements",

@@ -834,6 +834,43 @@ namespace pneuma
     }
 
     void
+    CableSystem::lumped_mass(LA::Vector &m) const
+    {
+      // The row sums of assemble_mass(): rho A int N_i ds on the
+      // mid-line's translations (the section unknowns carry none).
+      if (is_owner)
+        for (const auto &b : bodies)
+          {
+            const FiniteElement<1, 3> &fe = *b->fe;
+            const unsigned int         n  = fe.n_dofs_per_cell();
+            const double               rho_A =
+              b->definition.density * b->definition.area() / b->rho;
+            FEValues<1, 3>                       fe_values(mapping(),
+                                     fe,
+                                     QGauss<1>(fe.degree + 1),
+                                     update_values | update_JxW_values);
+            Vector<double>                       cell_mass(n);
+            std::vector<types::global_dof_index> dofs(n);
+            for (const auto &cell : b->dof_handler.active_cell_iterators())
+              {
+                fe_values.reinit(cell);
+                cell_mass = 0.;
+                for (const unsigned int q :
+                     fe_values.quadrature_point_indices())
+                  for (unsigned int i = 0; i < n; ++i)
+                    if (fe.system_to_component_index(i).first < 3)
+                      cell_mass(i) +=
+                        rho_A * fe_values.shape_value(i, q) * fe_values.JxW(q);
+                cell->get_dof_indices(dofs);
+                for (auto &i : dofs)
+                  i += b->offset;
+                m.add(dofs, cell_mass);
+              }
+          }
+      m.compress(VectorOperation::add);
+    }
+
+    void
     CableSystem::set_mode_fields(const std::vector<std::string> &names,
                                  const std::vector<LA::Vector>  &modes)
     {
@@ -1014,13 +1051,11 @@ namespace pneuma
         return result;
       for (const auto &b : bodies)
         {
-          CableReport                          r;
-          const Vector<double>                 local_u = extract(*b, u);
-          const unsigned int                   n = b->fe->n_dofs_per_cell();
-          Vector<double>                       nodal(b->dof_handler.n_dofs());
-          Vector<double>                       cell_residual(n);
-          CableCellOutput                      out;
-          std::vector<types::global_dof_index> dofs(n);
+          CableReport          r;
+          const Vector<double> local_u = extract(*b, u);
+          const unsigned int   n       = b->fe->n_dofs_per_cell();
+          Vector<double>       cell_residual(n);
+          CableCellOutput      out;
           r.max_force = -std::numeric_limits<double>::max();
           r.min_force = std::numeric_limits<double>::max();
           for (const auto &cell : b->dof_handler.active_cell_iterators())
@@ -1028,9 +1063,6 @@ namespace pneuma
               cell_residual = 0.;
               cell_terms(
                 *b, cell, t, local_u, nullptr, &cell_residual, nullptr, &out);
-              cell->get_dof_indices(dofs);
-              for (unsigned int i = 0; i < n; ++i)
-                nodal[dofs[i]] += cell_residual[i];
               r.max_force   = std::max(r.max_force, out.axial_force);
               r.min_force   = std::min(r.min_force, out.axial_force);
               r.max_bending = std::max(r.max_bending, out.bending_moment);
@@ -1042,14 +1074,12 @@ namespace pneuma
                            - local_u[cell->vertex_dof_index(0, c)];
               r.length += chord.norm();
             }
-          // Dead end forces belong to the applied loads, not the reaction.
+          // The reactions: the support residual at the held ends.
           const CableDefinition &d = b->definition;
           for (unsigned int c = 0; c < 3; ++c)
             {
               if (!b->start_dofs.empty())
                 {
-                  r.start_reaction[c]     = nodal[b->start_dofs[c]];
-                  r.end_reaction[c]       = nodal[b->end_dofs[c]];
                   r.start_displacement[c] = local_u[b->start_dofs[c]];
                   r.end_displacement[c]   = local_u[b->end_dofs[c]];
                   if (support)
@@ -1058,12 +1088,6 @@ namespace pneuma
                         (*support)[b->offset + b->start_dofs[c]];
                       r.end_reaction[c] =
                         (*support)[b->offset + b->end_dofs[c]];
-                    }
-                  else if (d.has_end_forces)
-                    {
-                      r.start_reaction[c] -=
-                        d.start_force->value(b->start_point, c);
-                      r.end_reaction[c] -= d.end_force->value(b->end_point, c);
                     }
                   // Only held components have a reaction.
                   if (d.start_support == EndSupport::free

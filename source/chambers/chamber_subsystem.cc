@@ -244,6 +244,12 @@ namespace pneuma
       return area > 0. && virial > 0. ? virial / (2. * area) : 0.;
     }
 
+    Vector<double>
+    ChamberSubsystem::border_for(const LA::Vector &field, const double t) const
+    {
+      return system.border_for(field, t);
+    }
+
     void
     ChamberSubsystem::add_statistics(Statistics &statistics,
                                      const LA::Vector &) const

@@ -313,6 +313,38 @@ namespace pneuma
       return "";
     }
 
+    Vector<double>
+    ChamberSystem::border_for(const LA::Vector &u, const double t) const
+    {
+      // A copy at pseudo time t: its levels, then its gas pressures.
+      ChamberSystem at(*this);
+      at.time = t;
+      for (auto &g : at.groups)
+        if (g.liquid)
+          {
+            const std::string error = at.predict_level(g, u);
+            AssertThrow(error.empty(), ExcMessage(error));
+          }
+      std::vector<ChamberMeasures> m;
+      assembler.assemble(
+        u, no_constraints(), at.loads(at.pack()), nullptr, nullptr, m, false);
+      for (auto &g : at.groups)
+        {
+          const auto &def = parameters.chambers[g.leader];
+          if (!g.gas)
+            continue;
+          if (at.pressure_controlled(g))
+            g.p = curve(*def.pressure, t);
+          else if (def.control != GasControl::volume || g.sealed)
+            {
+              double V, V_l, A, w;
+              group_measures(g, m, V, V_l, A, w);
+              g.p = at.gas_law(g, V - V_l).first - parameters.ambient_pressure;
+            }
+        }
+      return at.pack();
+    }
+
     std::string
     ChamberSystem::begin_step(const LA::Vector &u, const double t)
     {

@@ -25,7 +25,13 @@ namespace pneuma
       , membrane(the_membrane(model))
       , cables(model.find<cables::CableSubsystem>())
     {
-      membrane.add_restraint();
+    }
+
+    bool
+    ContactSubsystem::holds(const Subsystem &other) const
+    {
+      // Supported cables may hold the membrane they press on.
+      return &other == &membrane;
     }
 
     void

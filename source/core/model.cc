@@ -159,7 +159,8 @@ namespace pneuma
     std::vector<std::vector<double>> modes(
       6, std::vector<double>(owned.n_elements(), 0.));
     for (const auto &s : subsystems)
-      s->add_near_null_space(owned, modes);
+      if (auto *h = dynamic_cast<const LinearSolverHints *>(s.get()))
+        h->add_near_null_space(owned, modes);
     std::vector<std::vector<bool>> translations(
       3, std::vector<bool>(owned.n_elements()));
     double rotation_norm = 0.;
@@ -182,7 +183,8 @@ namespace pneuma
   {
     unsigned int n = 0;
     for (const auto &s : subsystems)
-      n = std::max(n, s->refinement_cycles());
+      if (const auto *r = dynamic_cast<const Refinable *>(s.get()))
+        n = std::max(n, r->refinement_cycles());
     return n;
   }
 
@@ -191,7 +193,8 @@ namespace pneuma
   {
     ghost(state.field);
     for (const auto &s : subsystems)
-      s->refine(ghosted);
+      if (auto *r = dynamic_cast<Refinable *>(s.get()))
+        r->refine(ghosted);
     setup();
   }
 
@@ -245,7 +248,8 @@ namespace pneuma
       return;
     laplacian.reinit(tangent);
     for (const auto &s : subsystems)
-      s->add_regularisation(update_constraints, laplacian);
+      if (const auto *a = dynamic_cast<const NewtonAids *>(s.get()))
+        a->add_regularisation(update_constraints, laplacian);
   }
 
   // ------------------------------------------------------------------
@@ -297,6 +301,18 @@ namespace pneuma
     return state;
   }
 
+  namespace
+  {
+    /// Does @p s save its own field in checkpoints (else the model
+    /// gathers it)?
+    bool
+    saves_own_field(const Subsystem &s)
+    {
+      const auto *c = dynamic_cast<const Checkpointed *>(&s);
+      return c && c->saves_own_field();
+    }
+  } // namespace
+
   void
   Model::save_checkpoint(
     Checkpoint                                         &checkpoint,
@@ -328,7 +344,7 @@ namespace pneuma
                        std::vector<double>(states[j]->border.begin(),
                                            states[j]->border.end()));
         for (unsigned int k = 0; k < subsystems.size(); ++k)
-          if (!subsystems[k]->saves_own_field())
+          if (!saves_own_field(*subsystems[k]))
             {
               // The owned entries of the range, gathered in index order.
               const UnknownRange                            r = ranges[k];
@@ -346,7 +362,7 @@ namespace pneuma
                              values);
             }
       }
-    for (const auto &s : subsystems)
+    for (const auto *s : with<Checkpointed>())
       s->save_checkpoint(checkpoint, pointers);
   }
 
@@ -388,7 +404,7 @@ namespace pneuma
         for (unsigned int i = 0; i < border.size(); ++i)
           states[j].border[i] = border[i];
         for (unsigned int k = 0; k < subsystems.size(); ++k)
-          if (!subsystems[k]->saves_own_field())
+          if (!saves_own_field(*subsystems[k]))
             {
               const auto values = checkpoint.get<std::vector<double>>(
                 "model/field/" + subsystems[k]->name() + suffix);
@@ -400,7 +416,7 @@ namespace pneuma
             }
         fields.push_back(&states[j].field);
       }
-    for (const auto &s : subsystems)
+    for (auto *s : with<Checkpointed>())
       s->load_checkpoint(checkpoint, fields);
     for (auto &state : states)
       state.field.compress(VectorOperation::insert);
@@ -421,7 +437,8 @@ namespace pneuma
     current_time = t;
     if (!started)
       for (const auto &s : subsystems)
-        s->first_guess(t, state.field);
+        if (const auto *a = dynamic_cast<const NewtonAids *>(s.get()))
+          a->first_guess(t, state.field);
     for (const auto &s : subsystems)
       s->set_prescribed_values(t, state.field);
     apply_kinematic_constraints(state.field);
@@ -461,6 +478,7 @@ namespace pneuma
   void
   Model::commit_step(const double t, const solvers::BorderedVector &state)
   {
+    current_time     = t;
     started          = true;
     committed_counts = {linear_solves,
                         solver.n_factorizations(),
@@ -497,47 +515,30 @@ namespace pneuma
                         const solvers::BorderedVector &state)
   {
     ghost(state.field);
-    const bool support =
-      std::any_of(subsystems.begin(), subsystems.end(), [](const auto &s) {
-        return s->needs_support_residual();
-      });
-    const bool unconstrained =
-      std::any_of(subsystems.begin(), subsystems.end(), [](const auto &s) {
-        return s->needs_unconstrained_residual();
-      });
-    // A probe assembly of the residual with the given constraints.
-    const auto residual = [&](const AffineConstraints<double> &constraints,
-                              LA::Vector                      &result) {
-      TimerOutput::Scope ts(*timers, "assembly");
-      result = make_field();
+    // The one residual assembly of a report: every subsystem's residual
+    // with no constraint condensed (at a tied node the tie's force), and
+    // from it the support residual C^T r (at a held dof the force the
+    // support exerts, whichever subsystems load it).
+    {
+      TimerOutput::Scope        ts(*timers, "assembly");
+      AffineConstraints<double> none;
+      none.reinit(relevant);
+      none.close();
+      unconstrained_forces = make_field();
       Vector<double> border_residual(n_border());
       Assembly       a;
       a.time            = current_time;
       a.field           = &ghosted;
       a.border          = &state.border;
-      a.constraints     = &constraints;
-      a.residual        = &result;
+      a.constraints     = &none;
+      a.residual        = &unconstrained_forces;
       a.border_residual = &border_residual;
       a.coupling        = &scratch_coupling;
       a.probe           = true;
       for (const auto &s : subsystems)
         s->assemble(a);
-    };
-    if (unconstrained)
-      {
-        AffineConstraints<double> none;
-        none.reinit(relevant);
-        none.close();
-        residual(none, unconstrained_forces);
-        // The support residual is the unconstrained one with each
-        // dependent dof's force moved to its masters (C^T r, what the
-        // assembly through the kinematic constraints does cell by cell):
-        // one assembly instead of two per history row.
-        if (support)
-          condense_kinematic(unconstrained_forces, support_forces);
-      }
-    else if (support)
-      residual(kinematic, support_forces);
+    }
+    condense_kinematic(unconstrained_forces, support_forces);
     for (const auto &s : subsystems)
       s->add_statistics(statistics, ghosted);
   }
@@ -579,14 +580,50 @@ namespace pneuma
                 ExcMessage("refusing to write a non-finite solution"));
     ghost(state.field);
     for (const auto &s : subsystems)
-      s->add_output_fields(ghosted);
+      if (auto *o = dynamic_cast<OutputFiles *>(s.get()))
+        o->add_output_fields(ghosted);
     if (!mode_fields.empty())
       for (const auto &s : subsystems)
-        s->add_mode_fields(mode_names, mode_fields);
+        if (auto *o = dynamic_cast<OutputFiles *>(s.get()))
+          o->add_mode_fields(mode_names, mode_fields);
     for (const auto &s : subsystems)
-      s->write_output_files(directory, step, t, ghosted);
+      if (auto *o = dynamic_cast<OutputFiles *>(s.get()))
+        o->write_output_files(directory, step, t, ghosted);
     mode_names.clear();
     mode_fields.clear();
+  }
+
+  Vector<double>
+  Model::border_for(const LA::Vector &field, const double t)
+  {
+    ghost(field);
+    Vector<double> border(n_border());
+    for (unsigned int k = 0; k < subsystems.size(); ++k)
+      {
+        const unsigned int n = subsystems[k]->n_border_unknowns();
+        if (n == 0)
+          continue;
+        const auto *b =
+          dynamic_cast<const BorderFromField *>(subsystems[k].get());
+        AssertThrow(b != nullptr,
+                    ExcMessage("the " + subsystems[k]->name()
+                               + " cannot evaluate their border unknowns "
+                                 "for a given field"));
+        const Vector<double> part = b->border_for(ghosted, t);
+        for (unsigned int j = 0; j < n; ++j)
+          border[border_offsets[k] + j] = part[j];
+      }
+    return border;
+  }
+
+  LA::Vector
+  Model::lumped_mass() const
+  {
+    LA::Vector m = make_field(), condensed;
+    for (const auto *i : with<Inertia>())
+      i->add_lumped_mass(m);
+    condense_kinematic(m, condensed);
+    return condensed;
   }
 
   LA::Vector
@@ -595,7 +632,8 @@ namespace pneuma
     std::vector<std::vector<double>> modes(
       6, std::vector<double>(owned.n_elements(), 0.));
     for (const auto &s : subsystems)
-      s->add_near_null_space(owned, modes);
+      if (auto *h = dynamic_cast<const LinearSolverHints *>(s.get()))
+        h->add_near_null_space(owned, modes);
     LA::Vector r(owned, comm);
     for (unsigned int k = 0; k < owned.n_elements(); ++k)
       r[owned.nth_index_in_set(k)] = modes[c][k];
@@ -639,7 +677,8 @@ namespace pneuma
     M.reinit(tangent);
     M = 0.;
     for (const auto &s : subsystems)
-      s->add_mass(update_constraints, M);
+      if (const auto *i = dynamic_cast<const Inertia *>(s.get()))
+        i->add_mass(update_constraints, M);
     for (const auto i : owned)
       if (update_constraints.is_constrained(i))
         M.set(i, i, 0.);
@@ -667,7 +706,8 @@ namespace pneuma
   Model::symmetric_by_construction() const
   {
     for (const auto &s : subsystems)
-      if (!s->symmetric_tangent())
+      if (const auto *h = dynamic_cast<const LinearSolverHints *>(s.get());
+          h && !h->symmetric_tangent())
         return false;
     return true;
   }
@@ -767,7 +807,8 @@ namespace pneuma
   {
     bool any = false;
     for (const auto &s : subsystems)
-      any = s->ramp_initial_loads(t0, t1) || any;
+      if (auto *a = dynamic_cast<NewtonAids *>(s.get()))
+        any = a->ramp_initial_loads(t0, t1) || any;
     // The loads at a given pseudo time changed: no assembly is current.
     tangent_is_current = false;
     return any;
@@ -815,12 +856,17 @@ namespace pneuma
     // when there is one: stiff cables must not slow its continuation).
     ensure_laplacian();
     for (const auto &s : subsystems)
-      {
-        const double shift = s->initial_shift(
-          factor, range(*s), tangent, laplacian, external, update_constraints);
-        if (shift > 0.)
-          return shift;
-      }
+      if (const auto *a = dynamic_cast<const NewtonAids *>(s.get()))
+        {
+          const double shift = a->initial_shift(factor,
+                                                range(*s),
+                                                tangent,
+                                                laplacian,
+                                                external,
+                                                update_constraints);
+          if (shift > 0.)
+            return shift;
+        }
     return 0.;
   }
 
@@ -864,7 +910,8 @@ namespace pneuma
     // add up (each proposal is its virial over its own walls' area).
     double force = 0.;
     for (const auto &s : subsystems)
-      force += std::max(0., s->start_prestress(external));
+      if (const auto *a = dynamic_cast<const NewtonAids *>(s.get()))
+        force += std::max(0., a->start_prestress(external));
     return force;
   }
 
@@ -876,9 +923,9 @@ namespace pneuma
     // cable force (a prestress-driven step without external load).
     const double f   = external.l2_norm();
     double       sum = f * f;
-    for (const auto &s : subsystems)
+    for (const auto *a : with<NewtonAids>())
       {
-        const double c = s->force_scale(ghosted);
+        const double c = a->force_scale(ghosted);
         sum += c * c;
       }
     return std::sqrt(sum);

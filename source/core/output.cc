@@ -335,6 +335,30 @@ namespace pneuma
   }
 
   void
+  OutputWriter::refinement_table(const MPI_Comm                 comm,
+                                 const std::vector<Statistics> &summaries) const
+  {
+    if (Utilities::MPI::this_mpi_process(comm) != 0 || summaries.empty())
+      return;
+    std::ofstream table(output_directory + "/refinement.csv");
+    table << "cycle";
+    for (const auto &e : summaries[0].entries())
+      if (e.uses & Statistics::test)
+        for (unsigned int c = 0; c < e.values.size(); ++c)
+          table << "," << e.header(c);
+    table << "\n" << std::setprecision(10);
+    for (unsigned int k = 0; k < summaries.size(); ++k)
+      {
+        table << k;
+        for (const auto &e : summaries[k].entries())
+          if (e.uses & Statistics::test)
+            for (const double v : e.values)
+              table << "," << v;
+        table << "\n";
+      }
+  }
+
+  void
   OutputWriter::test_output(const Statistics &row) const
   {
     if (!root || !test)

@@ -1,7 +1,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <pneuma/core/input_error.h>
-#include <pneuma/core/simulator.h>
+#include <pneuma/core/parse_input.h>
 
 #include <fstream>
 #include <sstream>

@@ -1,5 +1,6 @@
 #include <pneuma/core/input_error.h>
 #include <pneuma/core/input_layout.h>
+#include <pneuma/core/selection_parameter.h>
 #include <pneuma/membrane/constitutive_law.h>
 #include <pneuma/membrane/prestress.h>
 #include <pneuma/membrane/tension_field.h>
@@ -44,15 +45,16 @@ namespace pneuma
             "analysis (density * thickness per reference "
             "area).",
             Patterns::Double(0.));
-          prm.add_parameter(
+          add_selection(
+            prm,
             "Wrinkling",
             slot->wrinkling,
+            {{"none", false}, {"tension field", true}},
             "none: the law carries compression; tension field: the "
             "membrane wrinkles instead (relaxed energy of tension field "
             "theory, any law): every point is taut, wrinkled (uniaxial "
             "tension) or slack, shown by the VTU fields wrinkling_state, "
-            "wrinkle_direction and relaxed_compression.",
-            Patterns::Selection("none|tension field"));
+            "wrinkle_direction and relaxed_compression.");
           prm.add_parameter(
             "Wrinkling residual stiffness",
             slot->residual_stiffness,
@@ -182,7 +184,7 @@ namespace pneuma
               }
           }
 
-          if (slot->wrinkling == "tension field")
+          if (slot->wrinkling)
             {
               check_input(slot->residual_stiffness < 1e-2,
                           path + "/Wrinkling residual stiffness",

@@ -567,6 +567,39 @@ namespace pneuma
       M.compress(VectorOperation::add);
     }
 
+    void
+    MembraneAssembler::lumped_mass(LA::Vector &m) const
+    {
+      // The row sums of the consistent mass: the shape functions of each
+      // component sum to one, so row i sums to rho H int N_i dA.
+      const auto                          &fe = dof_handler->get_fe();
+      const QGauss<2>                      quadrature(degree + 1);
+      FEValues<2, 3>                       fe_values(*mapping,
+                               fe,
+                               quadrature,
+                               update_values | update_JxW_values);
+      const unsigned int                   n_dofs = fe.n_dofs_per_cell();
+      std::vector<types::global_dof_index> dof_indices(n_dofs);
+      Vector<double>                       cell_mass(n_dofs);
+      for (const auto &cell : dof_handler->active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const RegionMaterial &material = materials[cell->material_id()];
+            const double          rho_h = material.density * material.thickness;
+            fe_values.reinit(cell);
+            cell->get_dof_indices(dof_indices);
+            cell_mass = 0.;
+            for (unsigned int q = 0; q < quadrature.size(); ++q)
+              for (unsigned int i = 0; i < n_dofs; ++i)
+                cell_mass(i) += rho_h
+                                * fe_values.shape_value_component(
+                                  i, q, fe.system_to_component_index(i).first)
+                                * fe_values.JxW(q);
+            m.add(dof_indices, cell_mass);
+          }
+      m.compress(VectorOperation::add);
+    }
+
     double
     MembraneAssembler::enclosed_volume(const LA::Vector &u) const
     {

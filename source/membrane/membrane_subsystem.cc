@@ -6,18 +6,17 @@
 #include <deal.II/fe/mapping_q_cache.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
-#include <pneuma/contact/contact_subsystem.h>
 #include <pneuma/core/checkpoint.h>
 #include <pneuma/core/collective_error.h>
 #include <pneuma/core/input_error.h>
 #include <pneuma/core/input_layout.h>
 #include <pneuma/core/model.h>
 #include <pneuma/core/share_constraints.h>
+#include <pneuma/membrane/face_assembly.h>
 #include <pneuma/membrane/form_finding_law.h>
 #include <pneuma/membrane/membrane_subsystem.h>
 #include <pneuma/postprocess/membrane_fields.h>
 #include <pneuma/postprocess/membrane_probes.h>
-#include <pneuma/ties/tie_subsystem.h>
 
 #include <fstream>
 #include <limits>
@@ -554,7 +553,10 @@ namespace pneuma
         + ")): add supports (Fixed points, Fixed boundaries, Fixed regions) "
           "that hold it";
       // Contact with supported cables may hold it; then it is a warning.
-      if (coupled_to_others)
+      const auto holders = model.with<Holds>();
+      if (std::any_of(holders.begin(), holders.end(), [this](const Holds *h) {
+            return h->holds(*this);
+          }))
         {
           model.out() << "pneuma: warning: " << message << std::endl;
           return;
@@ -568,6 +570,13 @@ namespace pneuma
       const AffineConstraints<double> &constraints) const
     {
       DoFTools::make_sparsity_pattern(dofs, dsp, constraints, false);
+      // The two cells of an edge couple through its terms.
+      if (std::any_of(face_terms.begin(),
+                      face_terms.end(),
+                      [](const FaceTerms *t) {
+                        return t->on_interior_faces();
+                      }))
+        add_face_sparsity(dofs, constraints, dsp);
     }
 
     void
@@ -583,6 +592,12 @@ namespace pneuma
                                 LA::SparseMatrix                &M) const
     {
       assembler->mass_matrix(constraints, M);
+    }
+
+    void
+    MembraneSubsystem::add_lumped_mass(LA::Vector &m) const
+    {
+      assembler->lumped_mass(m);
     }
 
     void
@@ -862,6 +877,12 @@ namespace pneuma
     }
 
     void
+    MembraneSubsystem::add_face_terms(FaceTerms &terms)
+    {
+      face_terms.push_back(&terms);
+    }
+
+    void
     MembraneSubsystem::assemble(const Assembly &a)
     {
       AssemblyRequest request;
@@ -875,6 +896,23 @@ namespace pneuma
       assembler->assemble(*a.field, *a.constraints, request);
       for (auto *terms : cell_terms)
         terms->end();
+      if (face_terms.empty() || (!a.residual && !a.tangent))
+        return;
+      for (auto *terms : face_terms)
+        terms->begin(a);
+      assemble_faces(*mapping_cache,
+                     dofs,
+                     face_terms,
+                     *a.field,
+                     *a.constraints,
+                     a.tangent,
+                     a.residual);
+      for (auto *terms : face_terms)
+        terms->end();
+      if (a.residual)
+        a.residual->compress(VectorOperation::add);
+      if (a.tangent)
+        a.tangent->compress(VectorOperation::add);
     }
 
     std::string
@@ -940,39 +978,25 @@ namespace pneuma
         }
     }
 
-    bool
-    MembraneSubsystem::needs_support_residual() const
-    {
-      // Contact and ties pass cable forces to the membrane's held dofs
-      // (through the assembly, or through the tie constraints).
-      return model.find<contact::ContactSubsystem>() != nullptr
-             || model.find<ties::TieSubsystem>() != nullptr;
-    }
-
     void
     MembraneSubsystem::compute_reactions(const LA::Vector      &u,
                                          std::array<double, 3> &reaction,
                                          std::array<double, 3> &applied) const
     {
-      // Residual with hanging-node and rigid-plate forces condensed onto
-      // the independent dofs: at a prescribed dof, f_int - f_ext is the
-      // force the support exerts on the structure (the reaction). The
-      // loads of the cell terms (chambers) count as applied loads.
-      LA::Vector      residual = model.make_field(), ext = model.make_field();
+      // The reactions: the model's support residual (every subsystem's
+      // f_int - f_ext with the dependent dofs' forces condensed onto their
+      // masters): at a prescribed dof, the force the support exerts on the
+      // structure, whatever loads it (cables pressing on it too). The
+      // applied loads are assembled here; those of the cell terms
+      // (chambers) count as applied loads.
+      LA::Vector      ext = model.make_field(), scratch = model.make_field();
       AssemblyRequest request;
-      request.time = model.current_time;
-      // With contact or ties the support residual replaces this one
-      // (below): only the applied loads are assembled here.
-      const bool support_residual = needs_support_residual();
-      request.residual            = support_residual ? nullptr : &residual;
-      request.external            = &ext;
+      request.time     = model.time();
+      request.external = &ext;
       assembler->assemble(u, model.kinematic_constraints(), request);
       for (const auto *terms : cell_terms)
-        terms->add_loads(u, model.kinematic_constraints(), residual, ext);
-      // With contact, cables also press on held membrane dofs: the whole
-      // residual there is the support's force.
-      if (support_residual)
-        residual = model.support_residual();
+        terms->add_loads(u, model.kinematic_constraints(), scratch, ext);
+      const LA::Vector &residual = model.support_residual();
       reaction.fill(0.);
       applied.fill(0.);
       const auto &constraints = model.constraints();

@@ -24,82 +24,6 @@ namespace pneuma
   {
     using namespace dealii;
 
-    void
-    EigenParameters::declare_parameters(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Eigen analysis");
-      prm.add_parameter(
-        "Type",
-        type,
-        "Eigen analysis of the final converged state: none; tangent (the "
-        "lowest eigenvalues of the tangent, chamber terms included: "
-        "negative ones are unstable directions); modal (natural "
-        "frequencies about the prestressed state, with the membrane's and "
-        "cables' mass: Materials/.../Density, Cables/.../Density); buckling "
-        "(linear buckling of the state under the rate of the loads that led "
-        "to it: critical pseudo time t + lambda).",
-        Patterns::Selection("none|tangent|modal|buckling"));
-      prm.add_parameter("Number of modes",
-                        n_modes,
-                        "Eigenpairs to compute: those below the shift first "
-                        "(counted by the factorization), then the nearest "
-                        "above it; with Shift = 0, the lowest. Buckling: the "
-                        "lowest positive load factors.",
-                        Patterns::Integer(1, 200));
-      prm.add_parameter(
-        "Shift",
-        shift,
-        "Shift-and-invert point: tangent, an eigenvalue [N/m]; modal, a "
-        "frequency [Hz] (the modes around it). Must not be an eigenvalue. "
-        "Not used by buckling.",
-        Patterns::Double());
-      prm.add_parameter("Tolerance",
-                        tolerance,
-                        "ARPACK's relative accuracy of the eigenvalues.",
-                        Patterns::Double(1e-15, 1e-2));
-      prm.add_parameter("Maximum iterations",
-                        max_iterations,
-                        "ARPACK's restarts before the analysis is reported "
-                        "not converged.",
-                        Patterns::Integer(1, 100000));
-      prm.add_parameter(
-        "Every step",
-        every_step,
-        "Also analyse every converged step after the reference state and "
-        "write the values to history.csv (mode<k>_eigenvalue, "
-        "mode<k>_frequency or mode<k>_critical_time): the lowest "
-        "eigenvalues along the path. Costs the analysis per step.");
-      prm.add_parameter(
-        "Solver",
-        solver,
-        "automatic: Lanczos on MUMPS' LDL^T for a symmetric tangent, "
-        "Arnoldi on its LU where the tangent is not symmetric (measured, or "
-        "declared by friction in slip or a smoothed contact normal); "
-        "symmetric or non-symmetric: that one (buckling is symmetric only). "
-        "The non-symmetric solve gives the eigenvalues nearest the shift "
-        "(real parts; complex pairs reported by their real part) without "
-        "Sylvester's count below it.",
-        Patterns::Selection("automatic|symmetric|non-symmetric"));
-      prm.add_parameter("Write modes",
-                        write_modes,
-                        "Add the mode shapes (largest component 1) as fields "
-                        "mode_1, mode_2, ... to the final state's VTU files.");
-      prm.leave_subsection();
-    }
-
-    void
-    EigenParameters::parse_parameters(ParameterHandler &)
-    {
-      check_input(!(type == "buckling" && solver == "non-symmetric"),
-                  "Eigen analysis/Solver",
-                  "linear buckling needs the symmetric solver (its metric is "
-                  "the positive definite tangent)");
-      check_input(!(type == "modal" && shift < 0.),
-                  "Eigen analysis/Shift",
-                  "a modal analysis' shift is a frequency [Hz] and must not "
-                  "be negative");
-    }
-
     namespace
     {
       /// Relative size below which an entry of A D counts as zero.
@@ -107,10 +31,8 @@ namespace pneuma
     } // namespace
 
     void
-    EigenAnalysis::check_size(const Model &model, const EigenParameters &p)
+    EigenAnalysis::check_size(const Model &model, const unsigned int n_modes)
     {
-      if (!p.active())
-        return;
       types::global_dof_index n_free = 0;
       for (const auto i : model.locally_owned())
         if (!model.constraints().is_constrained(i))
@@ -118,9 +40,9 @@ namespace pneuma
       n_free = Utilities::MPI::sum(n_free, model.mpi_communicator());
       const types::global_dof_index n =
         n_free > model.n_border() ? n_free - model.n_border() : 0;
-      check_input(p.n_modes + 1 < n,
+      check_input(n_modes + 1 < n,
                   "Eigen analysis/Number of modes",
-                  std::to_string(p.n_modes) + " modes asked of a problem with "
+                  std::to_string(n_modes) + " modes asked of a problem with "
                     + std::to_string(n) + " free unknowns; at most "
                     + std::to_string(n > 1 ? n - 2 : 0) + " can be computed");
     }
@@ -518,14 +440,15 @@ namespace pneuma
     EigenResult
     EigenAnalysis::run(Model                 &model,
                        const BorderedVector  &state,
+                       const double           t,
                        const EigenParameters &p,
                        const bool             assembled)
     {
-      TimerOutput::Scope t(model.timer(), "eigen analysis");
+      TimerOutput::Scope timing(model.timer(), "eigen analysis");
       Timer              wall;
       EigenResult        result;
       result.type                 = p.type;
-      result.time                 = model.current_time;
+      result.time                 = t;
       const MPI_Comm  comm        = model.mpi_communicator();
       const IndexSet &owned       = model.locally_owned();
       const auto     &constraints = model.constraints();
@@ -536,7 +459,7 @@ namespace pneuma
             {
               BorderedVector residual;
               residual.field.reinit(state.field);
-              model.assemble(state, residual);
+              model.assemble(state, t, residual);
             }
           const LA::SparseMatrix &K = model.tangent_matrix();
           const BorderCoupling   &c = model.border_coupling();
@@ -549,11 +472,11 @@ namespace pneuma
           const double asym = asymmetry(K, owned);
           // Also where a subsystem says so (a smoothed contact normal,
           // friction in slip): the measure can miss a small, local part.
-          const bool declared = !model.symmetric_by_construction();
-          const bool non_symmetric =
-            p.solver == "non-symmetric"
-            || (p.solver == "automatic" && (asym > 1e-8 || declared));
-          if (p.type == "buckling" && (asym > 1e-8 || declared))
+          const bool declared      = !model.symmetric_by_construction();
+          const bool non_symmetric = p.solver == EigenSolver::non_symmetric
+                                     || (p.solver == EigenSolver::automatic
+                                         && (asym > 1e-8 || declared));
+          if (p.type == EigenProblem::buckling && (asym > 1e-8 || declared))
             throw std::runtime_error(
               "linear buckling needs a symmetric tangent; this one is not "
               "(friction, follower pressure on free edges, or a smoothed "
@@ -585,7 +508,7 @@ namespace pneuma
             start[i] = 1. + 0.5 * std::sin(1.3 * i + 0.1);
           start.compress(VectorOperation::insert);
           constraints.set_zero(start);
-          const bool buckling = p.type == "buckling";
+          const bool buckling = p.type == EigenProblem::buckling;
           using Arpack        = PArpackSolver<LA::Vector>;
           // One ARPACK solve for @p nev eigenpairs (@p which of the
           // transformed problem) in ARPACK's partition; the eigenvalues
@@ -671,13 +594,14 @@ namespace pneuma
           // The mass of a modal analysis (for the solve and the effective
           // masses).
           LA::SparseMatrix M;
-          if (p.type == "tangent" || p.type == "modal")
+          if (p.type == EigenProblem::tangent || p.type == EigenProblem::modal)
             {
               LA::SparseMatrix shifted;
-              const double     sigma =
-                p.type == "modal" ? std::pow(2. * M_PI * p.shift, 2) : p.shift;
+              const double     sigma = p.type == EigenProblem::modal
+                                         ? std::pow(2. * M_PI * p.shift, 2)
+                                         : p.shift;
               shifted.copy_from(K);
-              if (p.type == "modal")
+              if (p.type == EigenProblem::modal)
                 {
                   model.assemble_mass(M);
                   if (M.frobenius_norm() == 0.)
@@ -707,19 +631,19 @@ namespace pneuma
               const FreeIdentity I(constraints);
               // Non-symmetric: the eigenvalues nearest the shift (no
               // count to find those below it first).
-              if (non_symmetric && p.type == "modal")
+              if (non_symmetric && p.type == EigenProblem::modal)
                 solve(
                   K_c, M, inverse, Arpack::largest_magnitude, p.n_modes, sigma);
               else if (non_symmetric)
                 solve(
                   K_c, I, inverse, Arpack::largest_magnitude, p.n_modes, sigma);
-              else if (p.type == "modal")
+              else if (p.type == EigenProblem::modal)
                 lowest(K_c, M, inverse, sigma, inverse.negative);
               else
                 lowest(K_c, I, inverse, sigma, inverse.negative);
               result.values = mu;
               result.residual =
-                p.type == "modal"
+                p.type == EigenProblem::modal
                   ? relative_residual(
                     K_c, M, inverse, result.values, result.modes, false)
                   : relative_residual(
@@ -744,7 +668,7 @@ namespace pneuma
               // h: 1e-3 of the pseudo time (second order: the tangent
               // of a nonlinear prebuckling path to about 1e-6; the
               // difference of tangents is not lost in round-off).
-              const double   t0 = model.current_time;
+              const double   t0 = t;
               const double   h  = t0 > 0. ? -1e-3 * t0 : 1e-3;
               BorderedVector r0, rh, rate, v;
               r0.field.reinit(state.field);
@@ -799,7 +723,7 @@ namespace pneuma
 
           // Modal: effective masses (the mass that moves with each mode
           // under a base motion along x, y, z).
-          if (p.type == "modal")
+          if (p.type == EigenProblem::modal)
             {
               std::array<LA::Vector, 3> Mr;
               for (unsigned int d = 0; d < 3; ++d)

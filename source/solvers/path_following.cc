@@ -102,10 +102,9 @@ namespace pneuma
     void
     PathConstraintProblem::assemble_model(const BorderedVector &x)
     {
-      last_x             = model_part(x);
-      model.current_time = load_factor(x);
-      last_r             = last_x;
-      model.assemble(last_x, last_r);
+      last_x = model_part(x);
+      last_r = last_x;
+      model.assemble(last_x, load_factor(x), last_r);
       rate_current = false;
     }
 
@@ -122,7 +121,7 @@ namespace pneuma
     {
       if (rate_current)
         return;
-      const double t = model.current_time;
+      const double t = model.time();
       rate           = last_r;
       model.assemble_residual(last_x, t + h, rate);
       rate -= last_r;
@@ -175,11 +174,9 @@ namespace pneuma
           return g;
         }
       const double s =
-        std::max(radius_at(last_x.field, model.current_time, g.direction),
-                 1e-300);
+        std::max(radius_at(last_x.field, model.time(), g.direction), 1e-300);
       g.scale = 1. / (u_scale * u_scale * (1. + psi2) * s);
-      g.tau =
-        psi2 * (model.current_time - load_factor(center)) / ((1. + psi2) * s);
+      g.tau   = psi2 * (model.time() - load_factor(center)) / ((1. + psi2) * s);
       return g;
     }
 

@@ -260,11 +260,11 @@ namespace pneuma
       if (non_symmetric && report.note.empty())
         {
           EigenParameters p;
-          p.type              = "tangent";
-          p.n_modes           = nearest_for_count;
-          p.solver            = "non-symmetric";
-          p.write_modes       = false;
-          const EigenResult e = EigenAnalysis::run(model, state, p, true);
+          p.type    = EigenProblem::tangent;
+          p.n_modes = nearest_for_count;
+          p.solver  = EigenSolver::non_symmetric;
+          const EigenResult e =
+            EigenAnalysis::run(model, state, model.time(), p, true);
           if (e.computed)
             {
               report.negative =

@@ -51,8 +51,13 @@ namespace pneuma
       , membrane(the_membrane(model))
       , cables(the_cables(model))
     {
+    }
+
+    bool
+    TieSubsystem::holds(const Subsystem &other) const
+    {
       // A supported cable tied to the membrane may hold it.
-      membrane.add_restraint();
+      return &other == &membrane;
     }
 
     void

@@ -11,6 +11,7 @@
 
 #include <pneuma/cables/cable_parameters.h>
 #include <pneuma/cables/cable_system.h>
+#include <pneuma/core/capabilities.h>
 #include <pneuma/core/subsystem.h>
 
 #include <set>
@@ -20,7 +21,12 @@ namespace pneuma
   namespace cables
   {
     /// The cable subsystem.
-    class CableSubsystem : public Subsystem
+    class CableSubsystem : public Subsystem,
+                           public NewtonAids,
+                           public Inertia,
+                           public LinearSolverHints,
+                           public Checkpointed,
+                           public OutputFiles
     {
     public:
       explicit CableSubsystem(Model &model);
@@ -63,6 +69,8 @@ namespace pneuma
       add_mass(const AffineConstraints<double> &constraints,
                LA::SparseMatrix                &M) const override;
       void
+      add_lumped_mass(LA::Vector &m) const override;
+      void
       add_mode_fields(const std::vector<std::string> &names,
                       const std::vector<LA::Vector>  &modes) override;
       void
@@ -102,9 +110,6 @@ namespace pneuma
                       const std::vector<LA::Vector *> &fields) override;
       double
       force_scale(const LA::Vector &field) const override;
-      /// With contact: the end reactions need every subsystem's forces.
-      bool
-      needs_support_residual() const override;
       void
       add_statistics(Statistics       &statistics,
                      const LA::Vector &field) const override;

@@ -185,6 +185,10 @@ namespace pneuma
       void
       assemble_mass(const AffineConstraints<double> &constraints,
                     LA::SparseMatrix                &matrix) const;
+      /// The lumped mass of the mid-line translations (the row sums of
+      /// assemble_mass()) into @p m (added; all ranks call).
+      void
+      lumped_mass(LA::Vector &m) const;
 
       /// Mode shapes (global vectors) to add as nodal fields to the next
       /// write_output(), by name.
@@ -210,10 +214,9 @@ namespace pneuma
 
       /**
        * Reports of every cable at @p u (valid on rank 0). The end reactions
-       * are the cable's own nodal forces less the dead end forces, or,
-       * given @p support (Model::support_residual), the whole residual at
-       * the held end dofs, which includes contact forces on the end
-       * elements.
+       * are the support residual @p support (Model::support_residual: the
+       * whole residual at the held end dofs, contact forces on the end
+       * elements included); without it they are left 0.
        */
       std::vector<CableReport>
       reports(const double      t,

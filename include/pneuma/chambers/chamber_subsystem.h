@@ -13,6 +13,7 @@
 #include <pneuma/chambers/chamber_assembler.h>
 #include <pneuma/chambers/chamber_parameters.h>
 #include <pneuma/chambers/chamber_system.h>
+#include <pneuma/core/capabilities.h>
 #include <pneuma/core/subsystem.h>
 #include <pneuma/membrane/membrane_subsystem.h>
 
@@ -23,7 +24,12 @@ namespace pneuma
   namespace chambers
   {
     /// The chamber subsystem.
-    class ChamberSubsystem : public Subsystem, public membrane::CellTerms
+    class ChamberSubsystem : public Subsystem,
+                             public NewtonAids,
+                             public Checkpointed,
+                             public OutputFiles,
+                             public BorderFromField,
+                             public membrane::CellTerms
     {
     public:
       explicit ChamberSubsystem(Model &model);
@@ -90,6 +96,9 @@ namespace pneuma
       /// out.
       double
       start_prestress(const LA::Vector &external) const override;
+      /// The border for a given field (ChamberSystem::border_for()).
+      Vector<double>
+      border_for(const LA::Vector &field, const double t) const override;
       void
       add_statistics(Statistics       &statistics,
                      const LA::Vector &field) const override;

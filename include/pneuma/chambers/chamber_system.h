@@ -117,6 +117,17 @@ namespace pneuma
                solvers::BorderCoupling            &coupling,
                const unsigned int                  offset) const;
 
+      /**
+       * The scaled border that the chambers' equations give for the field
+       * @p u (ghosted) at pseudo time @p t, without Newton: the levels that
+       * hold the liquid volumes, the pressures of the gas laws at the gas
+       * volumes they leave, the prescribed pressures. An open chamber under
+       * volume control keeps its last pressure: it is the multiplier of its
+       * volume constraint, not a function of the field.
+       */
+      Vector<double>
+      border_for(const LA::Vector &u, const double t) const;
+
       /// Force scale of the chamber loads (for the residual reference).
       double
       force_scale() const

@@ -13,6 +13,7 @@
 #include <pneuma/cables/cable_subsystem.h>
 #include <pneuma/contact/contact_parameters.h>
 #include <pneuma/contact/contact_system.h>
+#include <pneuma/core/capabilities.h>
 #include <pneuma/core/subsystem.h>
 #include <pneuma/membrane/membrane_subsystem.h>
 
@@ -21,7 +22,11 @@ namespace pneuma
   namespace contact
   {
     /// The contact subsystem.
-    class ContactSubsystem : public Subsystem
+    class ContactSubsystem : public Subsystem,
+                             public LinearSolverHints,
+                             public Checkpointed,
+                             public OutputFiles,
+                             public Holds
     {
     public:
       explicit ContactSubsystem(Model &model);
@@ -37,6 +42,9 @@ namespace pneuma
       {
         return "contact";
       }
+      /// The membrane may be held by the cables it touches.
+      bool
+      holds(const Subsystem &other) const override;
       void
       declare_parameters(ParameterHandler  &prm,
                          const InputLayout &layout) override;

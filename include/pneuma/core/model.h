@@ -19,6 +19,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/affine_constraints.h>
 
+#include <pneuma/core/capabilities.h>
 #include <pneuma/core/constraint_distribution.h>
 #include <pneuma/core/linear_algebra.h>
 #include <pneuma/core/subsystem.h>
@@ -100,6 +101,18 @@ namespace pneuma
     all() const
     {
       return subsystems;
+    }
+    /// The subsystems with the capability @p C (core/capabilities.h), in
+    /// order.
+    template <typename C>
+    std::vector<C *>
+    with() const
+    {
+      std::vector<C *> found;
+      for (const auto &s : subsystems)
+        if (auto *p = dynamic_cast<C *>(s.get()))
+          found.push_back(p);
+      return found;
     }
     /// The loads shared by the subsystems (gravity, pressure curves).
     const loads::Loads &
@@ -245,8 +258,8 @@ namespace pneuma
      * with only the kinematic constraints condensed: at a held dof it is
      * the force the support exerts, whichever subsystems load that dof
      * (a cable end takes its element's force and the contact forces on
-     * it). Valid during add_statistics() when a subsystem asked for it
-     * (Subsystem::needs_support_residual).
+     * it). Valid during add_statistics(): the one reaction path of every
+     * subsystem.
      */
     const LA::Vector &
     support_residual() const
@@ -256,8 +269,7 @@ namespace pneuma
     /**
      * The residual f_int - f_ext of every subsystem at the reported state
      * with no constraint condensed: at a tied cable node it is the force
-     * the tie exerts on it. Valid during add_statistics() when a subsystem
-     * asked for it (Subsystem::needs_unconstrained_residual).
+     * the tie exerts on it. Valid during add_statistics().
      */
     const LA::Vector &
     unconstrained_residual() const
@@ -348,11 +360,47 @@ namespace pneuma
                    const LA::SparseMatrix                  &L,
                    const dealii::AffineConstraints<double> &constraints) const;
 
-    /// Pseudo time of the loads in assemble().
-    double current_time = 0.;
-    /// A step has been committed (or a checkpoint loaded): steps no longer
-    /// start from the reference state (Subsystem::first_guess).
-    bool started = false;
+    /// Pseudo time of the loads of the state last begun, committed,
+    /// rejected or assembled at (begin_step(), commit_step(),
+    /// reject_step(), assemble(u, t, r)).
+    double
+    time() const
+    {
+      return current_time;
+    }
+    /// Set that time for the reports of a state reached otherwise (a
+    /// located critical point, the last state an interrupted run saw).
+    void
+    set_time(const double t)
+    {
+      current_time = t;
+    }
+    /// The residual and tangent at @p u at pseudo time @p t (the model
+    /// is then at @p t).
+    void
+    assemble(const solvers::BorderedVector &u,
+             const double                   t,
+             solvers::BorderedVector       &residual)
+    {
+      current_time = t;
+      assemble(u, residual);
+    }
+
+    /// Number of monitor points (Output/Monitor points), and the global
+    /// index of displacement component @p c of point @p m on the rank that
+    /// reports it (invalid on the others): subsystems with the
+    /// MonitorPoints capability.
+    unsigned int
+    n_monitor_points() const
+    {
+      const auto *m = find<MonitorPoints>();
+      return m ? m->n_monitor_points() : 0;
+    }
+    dealii::types::global_dof_index
+    monitor_dof(const unsigned int m, const unsigned int c) const
+    {
+      return find<MonitorPoints>()->monitor_dof(m, c);
+    }
 
     /**
      * The residual alone at @p u and pseudo time @p t (path following
@@ -412,6 +460,23 @@ namespace pneuma
      */
     void
     assemble_mass(LA::SparseMatrix &M) const;
+    /**
+     * The border unknowns (scaled, as in a state) that the subsystems'
+     * border equations give for @p field at pseudo time @p t, without
+     * Newton (BorderFromField, core/capabilities.h): what a strategy
+     * without a matrix needs. Throws if a subsystem with border unknowns
+     * cannot evaluate them.
+     */
+    dealii::Vector<double>
+    border_for(const LA::Vector &field, const double t);
+    /**
+     * The lumped (diagonal) mass of every subsystem with Inertia
+     * (core/capabilities.h), the dependent dofs' masses moved to their
+     * masters (C^T m): for strategies without a matrix (explicit
+     * dynamics, dynamic relaxation). Owned entries.
+     */
+    LA::Vector
+    lumped_mass() const;
     /// The rigid translation along axis @p c (0..2) of every subsystem
     /// that has one (1 on the translation dofs of that component).
     LA::Vector
@@ -471,6 +536,11 @@ namespace pneuma
     solvers::BorderCoupling coupling;
     /// Border blocks of assemble_residual(), thrown away.
     solvers::BorderCoupling scratch_coupling;
+    /// Pseudo time of the loads in assemble().
+    double current_time = 0.;
+    /// A step has been committed (or a checkpoint loaded): steps no longer
+    /// start from the reference state (Subsystem::first_guess).
+    bool started = false;
     /// Mode shapes of the next write_output() (ghosted).
     std::vector<std::string> mode_names;
     std::vector<LA::Vector>  mode_fields;

@@ -19,6 +19,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace pneuma
 {
@@ -80,6 +81,12 @@ namespace pneuma
     summary(const Statistics          &row,
             const std::string         &message,
             const dealii::TimerOutput &timer) const;
+
+    /// Write refinement.csv: one row per adaptive refinement cycle of the
+    /// test-level values of its @p summaries (rank 0).
+    void
+    refinement_table(const MPI_Comm                 comm,
+                     const std::vector<Statistics> &summaries) const;
 
     /// Write the regression-test output "output" in the working directory
     /// if Output/Test output is set.

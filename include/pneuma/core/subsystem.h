@@ -10,9 +10,11 @@
  * (field dofs numbered after the subsystems before it, or a few border
  * unknowns), its constraints and sparsity couplings, assembles its residual
  * and tangent contributions for a state, takes part in the life of a step
- * (begin, check, commit, reject), adds named statistics with units, and
- * writes its output fields. The Model (core/model.h) loops over the
- * subsystems a scene activates, in their registration order; a scene
+ * (begin, check, commit, reject) and adds named statistics with units.
+ * What only some subsystems have (Newton's aids, mass, refinement,
+ * checkpoint state, output files, ...) are the optional capability
+ * interfaces of core/capabilities.h. The Model (core/model.h) loops over
+ * the subsystems a scene activates, in their registration order; a scene
  * without cables builds no cable subsystem. No subsystem knows the
  * solution strategy that drives the model.
  *
@@ -160,107 +162,6 @@ namespace pneuma
       (void)dsp;
       (void)constraints;
     }
-    /// The regularisation matrix of the continuation: the geometric
-    /// stiffness of a unit prestress on the subsystem's unknowns.
-    virtual void
-    add_regularisation(const dealii::AffineConstraints<double> &constraints,
-                       LA::SparseMatrix                        &L) const
-    {
-      (void)constraints;
-      (void)L;
-    }
-    /**
-     * The mass matrix of the eigen analysis (solvers/eigen_analysis.h):
-     * the consistent mass of this subsystem's translations in the
-     * reference configuration (density times thickness or section area),
-     * distributed with @p constraints into @p M (the tangent's pattern).
-     */
-    virtual void
-    add_mass(const dealii::AffineConstraints<double> &constraints,
-             LA::SparseMatrix                        &M) const
-    {
-      (void)constraints;
-      (void)M;
-    }
-    /**
-     * Near-null-space vectors for AMG over the owned dofs (in the order of
-     * @p owned), filled where this subsystem owns dofs: modes 0-2 the
-     * rigid translations, 3-5 the rotations (left zero if the subsystem
-     * has none).
-     */
-    virtual void
-    add_near_null_space(const dealii::IndexSet           &owned,
-                        std::vector<std::vector<double>> &modes) const
-    {
-      (void)owned;
-      (void)modes;
-    }
-    /**
-     * The first continuation shift this subsystem proposes for a shift
-     * @p factor relative to its stiffness scale (0: no proposal; the first
-     * proposal in subsystem order is taken): e.g. factor mean(diag K) /
-     * mean(diag L) over the subsystem's unconstrained dofs @p range.
-     */
-    virtual double
-    initial_shift(const double                             factor,
-                  const UnknownRange                      &range,
-                  const LA::SparseMatrix                  &K,
-                  const LA::SparseMatrix                  &L,
-                  const LA::Vector                        &external,
-                  const dealii::AffineConstraints<double> &constraints) const
-    {
-      (void)factor;
-      (void)range;
-      (void)K;
-      (void)L;
-      (void)external;
-      (void)constraints;
-      return 0.;
-    }
-
-    /**
-     * Newton's stiffened start (solvers/newton_solver.h): an isotropic
-     * membrane force (N/m) estimated from the applied loads @p external
-     * (owned) or from this subsystem's own loads at the state last
-     * assembled (a chamber's pressure), whose geometric stiffness makes
-     * the first solve from an unstressed state well posed and free of the
-     * linear solution's kinks; 0: no proposal (the proposals add up).
-     */
-    virtual double
-    start_prestress(const LA::Vector &external) const
-    {
-      (void)external;
-      return 0.;
-    }
-
-    /**
-     * False if this subsystem's tangent, as last assembled, is not
-     * symmetric by construction (the smoothed master normal's contact
-     * force, a slipping friction point; asked after each Newton assembly,
-     * the same answer on every rank): the direct solver then
-     * takes the LU path, whatever the measured asymmetry of the assembled
-     * matrix (a random projection that a small, local asymmetric part
-     * passes below its threshold).
-     */
-    virtual bool
-    symmetric_tangent() const
-    {
-      return true;
-    }
-    /// Adaptive refinement: cycles after the first run (0: none).
-    virtual unsigned int
-    refinement_cycles() const
-    {
-      return 0;
-    }
-    /// Refine by an error indicator of the converged @p field (ghosted);
-    /// the model is set up again afterwards.
-    virtual void
-    refine(const LA::Vector &field)
-    {
-      (void)field;
-    }
-
     /// Before a run's first factorization: throw an InputError naming
     /// what the scene leaves free (rigid-body motions, unsupported
     /// bodies). Not called by finite-difference checks of the tangent.
@@ -270,36 +171,6 @@ namespace pneuma
     }
 
     // ---- the life of a step
-    /**
-     * The first step of a run starts from the reference state: write a
-     * first guess of this subsystem's free unknowns for the step to @p t
-     * into the owned entries of @p field (a cable that is slack in its
-     * straight reference hangs along its load, so that Newton does not
-     * settle on the straight, compressed equilibrium). Prescribed values
-     * are written afterwards.
-     */
-    virtual void
-    first_guess(const double t, LA::Vector &field) const
-    {
-      (void)t;
-      (void)field;
-    }
-    /**
-     * The automatic first step (Load stepping/Initial prestress): loads
-     * that act in full from the start of the run whatever the load curves
-     * (a cable's prestress or short unstressed length) grow from zero at
-     * @p t0 to full at @p t1 with the factor min(1, (t - t0)/(t1 - t0)),
-     * so that a cut back reduces them with the other loads; @p t1 <= @p t0
-     * removes the ramp (a new run). Returns whether this subsystem has
-     * such loads (the same on every rank).
-     */
-    virtual bool
-    ramp_initial_loads(const double t0, const double t1)
-    {
-      (void)t0;
-      (void)t1;
-      return false;
-    }
     /// Write the prescribed values at pseudo time @p t into the owned
     /// entries of @p field.
     virtual void
@@ -372,105 +243,13 @@ namespace pneuma
     {
       (void)field;
     }
-    /// Force scale of this subsystem's loads at the current state, for
-    /// Newton's residual reference.
-    virtual double
-    force_scale(const LA::Vector &field) const
-    {
-      (void)field;
-      return 0.;
-    }
-
-    // ---- checkpoint and restart (core/checkpoint.h)
-    /**
-     * Does this subsystem save and restore its own field values (the
-     * membrane, through p4est with its mesh)? Otherwise the model stores
-     * the values of its range, gathered on rank 0.
-     */
-    virtual bool
-    saves_own_field() const
-    {
-      return false;
-    }
-    /**
-     * Store what a restart needs besides the field and the border (all
-     * ranks call it; sections put on rank 0 are the ones written).
-     * @p fields (ghosted): the converged field first, then the other
-     * whole-model vectors the load path keeps (the last step's increment,
-     * its predictor); a subsystem that saves its own field saves all.
-     */
-    virtual void
-    save_checkpoint(Checkpoint                            &checkpoint,
-                    const std::vector<const LA::Vector *> &fields) const
-    {
-      (void)checkpoint;
-      (void)fields;
-    }
-    /**
-     * Restore that state (the model is set up and initialized at t = 0);
-     * a subsystem that saves its own field writes its owned entries of
-     * each of @p fields (as many as were saved) here.
-     */
-    virtual void
-    load_checkpoint(const Checkpoint                &checkpoint,
-                    const std::vector<LA::Vector *> &fields)
-    {
-      (void)checkpoint;
-      (void)fields;
-    }
     // ---- reporting
-    /// True if add_statistics() reads Model::support_residual() (it costs
-    /// one residual assembly of every subsystem per report).
-    virtual bool
-    needs_support_residual() const
-    {
-      return false;
-    }
-    /// True if add_statistics() reads Model::unconstrained_residual() (one
-    /// more residual assembly of every subsystem per report).
-    virtual bool
-    needs_unconstrained_residual() const
-    {
-      return false;
-    }
-    /// Add named values with units at the converged state @p field.
+    /// Add named values with units at the converged state @p field
+    /// (ghosted); the reactions come from Model::support_residual().
     virtual void
     add_statistics(Statistics &statistics, const LA::Vector &field) const
     {
       (void)statistics;
-      (void)field;
-    }
-    /// Output, phase 1: add fields of the state (ghosted @p field) to the
-    /// outputs of this or other subsystems (e.g. contact pressure on the
-    /// membrane's VTU).
-    virtual void
-    add_output_fields(const LA::Vector &field)
-    {
-      (void)field;
-    }
-    /**
-     * Output, between phases 1 and 2: add the mode shapes @p modes
-     * (ghosted global vectors, alive until phase 2) of an eigen analysis
-     * as fields named @p names (e.g. "mode_1") to this subsystem's output.
-     */
-    virtual void
-    add_mode_fields(const std::vector<std::string> &names,
-                    const std::vector<LA::Vector>  &modes)
-    {
-      (void)names;
-      (void)modes;
-    }
-    /// Output, phase 2: write this subsystem's files for @p step into
-    /// @p directory (VTU, PVTU, PVD records).
-    virtual void
-    write_output_files(const std::string &directory,
-                       const unsigned int step,
-                       const double       t,
-                       const LA::Vector  &field)
-    {
-      (void)directory;
-      (void)step;
-      (void)t;
       (void)field;
     }
   };

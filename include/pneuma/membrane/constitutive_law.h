@@ -151,11 +151,12 @@ namespace pneuma
         std::string                law       = "Saint Venant-Kirchhoff";
         double                     thickness = 1e-3;
         double                     density   = 0.;
-        std::string                wrinkling = "none";
-        std::string                warp_direction;
-        std::string                prestress          = "0";
-        double                     residual_stiffness = 1e-6;
-        double                     smoothing          = 0.;
+        /// Wrinkling: none (false) or tension field (true).
+        bool        wrinkling = false;
+        std::string warp_direction;
+        std::string prestress          = "0";
+        double      residual_stiffness = 1e-6;
+        double      smoothing          = 0.;
         std::map<std::string, std::unique_ptr<ConstitutiveLaw>> laws;
       };
       std::vector<std::unique_ptr<Slot>>                   slots;

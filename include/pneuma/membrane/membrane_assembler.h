@@ -97,6 +97,10 @@ namespace pneuma
       void
       mass_matrix(const AffineConstraints<double> &constraints,
                   LA::SparseMatrix                &M) const;
+      /// The lumped mass: the row sums of mass_matrix() into @p m (added,
+      /// owned entries; no constraints).
+      void
+      lumped_mass(LA::Vector &m) const;
 
       /// Volume enclosed by the current surface, V = 1/3 int x.n da.
       double
@@ -107,8 +111,9 @@ namespace pneuma
       surface_area(const LA::Vector &u) const;
 
       /**
-       * Form finding (solvers/form_finding.h): the laws of @p laws replace
-       * the regions' and no load acts; an empty map restores the analysis.
+       * Form finding (strategies/form_finding/form_finding.h): the laws of @p
+       * laws replace the regions' and no load acts; an empty map restores the
+       * analysis.
        */
       void
       set_form_finding(std::map<types::material_id, RegionMaterial> laws)

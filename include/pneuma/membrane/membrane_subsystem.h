@@ -21,6 +21,7 @@
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/numerics/data_out.h>
 
+#include <pneuma/core/capabilities.h>
 #include <pneuma/core/subsystem.h>
 #include <pneuma/geometry/adaptive_refinement.h>
 #include <pneuma/geometry/junctions.h>
@@ -28,6 +29,7 @@
 #include <pneuma/loads/boundary_conditions.h>
 #include <pneuma/loads/rigid_regions.h>
 #include <pneuma/membrane/constitutive_law.h>
+#include <pneuma/membrane/face_terms.h>
 #include <pneuma/membrane/membrane_assembler.h>
 
 #include <array>
@@ -43,7 +45,14 @@ namespace pneuma
     using namespace dealii;
 
     /// The membrane subsystem.
-    class MembraneSubsystem : public Subsystem
+    class MembraneSubsystem : public Subsystem,
+                              public MonitorPoints,
+                              public NewtonAids,
+                              public Inertia,
+                              public LinearSolverHints,
+                              public Refinable,
+                              public Checkpointed,
+                              public OutputFiles
     {
     public:
       explicit MembraneSubsystem(Model &model);
@@ -95,6 +104,8 @@ namespace pneuma
       add_mass(const AffineConstraints<double> &constraints,
                LA::SparseMatrix                &M) const override;
       void
+      add_lumped_mass(LA::Vector &m) const override;
+      void
       add_near_null_space(
         const IndexSet                   &owned,
         std::vector<std::vector<double>> &modes) const override;
@@ -115,9 +126,6 @@ namespace pneuma
       assemble(const Assembly &a) override;
       std::string
       check_state(const LA::Vector &field) const override;
-      /// With contact: the reactions take the cables' forces on held dofs.
-      bool
-      needs_support_residual() const override;
       void
       add_statistics(Statistics       &statistics,
                      const LA::Vector &field) const override;
@@ -136,13 +144,11 @@ namespace pneuma
       /// Add terms to the membrane's cell loop (kept until destruction).
       void
       add_cell_terms(CellTerms &terms);
-      /// A subsystem that may hold the membrane in place (contact with
-      /// supported cables) says so: free rigid motions are then a warning.
+      /// Add terms on the cells' edges (membrane/face_terms.h; kept until
+      /// destruction), before the model's setup: their couplings enter the
+      /// sparsity pattern.
       void
-      add_restraint()
-      {
-        coupled_to_others = true;
-      }
+      add_face_terms(FaceTerms &terms);
       const Mapping<2, 3> &
       mapping() const
       {
@@ -175,16 +181,18 @@ namespace pneuma
       {
         return assembler->reference_geometry();
       }
-      /// Number of monitor points (Output/Monitor points).
+      /// Number of monitor points (Output/Monitor points; known once the
+      /// input is parsed).
       unsigned int
-      n_monitor_points() const
+      n_monitor_points() const override
       {
-        return monitor_dofs.size();
+        return monitor_points.size();
       }
       /// Global index of displacement component @p c of monitor point
-      /// @p m on the one rank that reports it; invalid on the others.
+      /// @p m on the one rank that reports it; invalid on the others
+      /// (located at initialize()).
       types::global_dof_index
-      monitor_dof(const unsigned int m, const unsigned int c) const
+      monitor_dof(const unsigned int m, const unsigned int c) const override
       {
         return monitor_dofs[m][c];
       }
@@ -201,7 +209,7 @@ namespace pneuma
       {
         return *output;
       }
-      // ---- form finding (solvers/form_finding.h)
+      // ---- form finding (strategies/form_finding/form_finding.h)
       /**
        * Replace every region's law by the updated-reference law of its
        * prestress (membrane/form_finding_law.h) with homotopy factor
@@ -309,10 +317,8 @@ namespace pneuma
       geometry::JunctionTies                     junction_ties;
       std::unique_ptr<MembraneAssembler>         assembler;
       std::vector<CellTerms *>                   cell_terms;
-      /// Other subsystems act on the membrane through forces that may hold
-      /// it (contact): free rigid motions are then only a warning.
-      bool   coupled_to_others = false;
-      double reference_volume  = 0.;
+      std::vector<FaceTerms *>                   face_terms;
+      double                                     reference_volume = 0.;
       /// Form finding: on, its force scale, the displacement of the
       /// reference from the input's surface (ghosted) and its updates.
       bool                                            form_finding    = false;

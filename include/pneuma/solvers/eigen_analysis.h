@@ -50,38 +50,42 @@ namespace pneuma
 
   namespace solvers
   {
-    /// What to compute ("Eigen analysis" in the input).
+    /// The eigenproblem (see the file's description).
+    enum class EigenProblem
+    {
+      none,
+      tangent,
+      modal,
+      buckling
+    };
+
+    /// How the eigenproblem is solved.
+    enum class EigenSolver
+    {
+      /// Lanczos on LDL^T where the tangent is symmetric, else Arnoldi.
+      automatic,
+      symmetric,
+      non_symmetric
+    };
+
+    /// What to compute (strategies/eigen_analysis reads it from "Eigen
+    /// analysis").
     struct EigenParameters
     {
-      /// none | tangent | modal | buckling
-      std::string  type    = "none";
+      EigenProblem type    = EigenProblem::none;
       unsigned int n_modes = 6;
       /// Tangent: eigenvalue shift [N/m]; modal: frequency shift [Hz].
       double       shift          = 0.;
       double       tolerance      = 1e-10;
       unsigned int max_iterations = 300;
-      bool         write_modes    = true;
-      /// Also at every converged step (history.csv columns).
-      bool every_step = false;
-      /// automatic | symmetric | non-symmetric
-      std::string solver = "automatic";
-
-      void
-      declare_parameters(dealii::ParameterHandler &prm);
-      void
-      parse_parameters(dealii::ParameterHandler &prm);
-      bool
-      active() const
-      {
-        return type != "none";
-      }
+      EigenSolver  solver         = EigenSolver::automatic;
     };
 
     /// The outcome of one eigen analysis.
     struct EigenResult
     {
-      bool        computed = false;
-      std::string type;
+      bool         computed = false;
+      EigenProblem type     = EigenProblem::none;
       /// Ascending: lambda (tangent), omega^2 (modal), the buckling
       /// factor lambda (buckling: the load change per unit pseudo time
       /// that buckles, negative for reversed loads).
@@ -124,8 +128,8 @@ namespace pneuma
     {
     public:
       /**
-       * The analysis @p p of @p state at the model's current time
-       * (converged there). Failures (a singular shifted tangent, no
+       * The analysis @p p of @p state at pseudo time @p t (converged
+       * there). Failures (a singular shifted tangent, no
        * convergence, an unstable state for buckling) are returned in
        * EigenResult::error, never thrown. With @p assembled the model's
        * tangent and border are already those of @p state (the stability
@@ -134,6 +138,7 @@ namespace pneuma
       static EigenResult
       run(Model                 &model,
           const BorderedVector  &state,
+          const double           t,
           const EigenParameters &p,
           const bool             assembled = false);
 
@@ -147,9 +152,10 @@ namespace pneuma
       }
 
       /// After the model's setup: InputError naming "Eigen analysis/Number
-      /// of modes" if the problem has too few free unknowns.
+      /// of modes" if the problem has too few free unknowns for
+      /// @p n_modes.
       static void
-      check_size(const Model &model, const EigenParameters &p);
+      check_size(const Model &model, const unsigned int n_modes);
     };
   } // namespace solvers
 } // namespace pneuma

@@ -27,6 +27,7 @@
 #include <deal.II/lac/trilinos_precondition.h>
 
 #include <pneuma/core/linear_algebra.h>
+#include <pneuma/core/statistics.h>
 #include <pneuma/solvers/symmetric_inertia.h>
 
 #include <memory>
@@ -184,6 +185,12 @@ namespace pneuma
         factorizations    = n_factorizations;
         krylov_iterations = n_krylov_iterations;
       }
+
+      /// Its counts and, for the direct solver, the last factorization
+      /// (kind, size, work) and where the LDL^T's time went, as summary
+      /// entries (linear_solver_statistics.cc).
+      void
+      add_statistics(Statistics &row) const;
 
     private:
       /// Entry "Type": "direct" or "amg".

@@ -16,6 +16,7 @@
 #include <deal.II/base/index_set.h>
 
 #include <pneuma/cables/cable_subsystem.h>
+#include <pneuma/core/capabilities.h>
 #include <pneuma/core/subsystem.h>
 #include <pneuma/membrane/membrane_subsystem.h>
 #include <pneuma/ties/membrane_point.h>
@@ -26,7 +27,7 @@ namespace pneuma
   namespace ties
   {
     /// The tie subsystem.
-    class TieSubsystem : public Subsystem
+    class TieSubsystem : public Subsystem, public Holds
     {
     public:
       explicit TieSubsystem(Model &model);
@@ -42,6 +43,9 @@ namespace pneuma
       {
         return "ties";
       }
+      /// The membrane may be held by the supported cables tied to it.
+      bool
+      holds(const Subsystem &other) const override;
       void
       declare_parameters(ParameterHandler  &prm,
                          const InputLayout &layout) override;
@@ -63,11 +67,6 @@ namespace pneuma
       {
       }
 
-      bool
-      needs_unconstrained_residual() const override
-      {
-        return true;
-      }
       /// Per tie: the force it exerts on the cable (sum over its nodes) and
       /// the largest distance of a node from its membrane point.
       void

@@ -12,6 +12,7 @@
 #include <pneuma/cables/cable_shape.h>
 #include <pneuma/cables/circular_curve.h>
 #include <pneuma/core/input_error.h>
+#include <pneuma/core/selection_parameter.h>
 
 #include <cmath>
 
@@ -42,10 +43,11 @@ namespace pneuma
                             turns,
                             "Number of turns; > 0.",
                             Patterns::Double(0.));
-          prm.add_parameter("Handedness",
-                            handedness,
-                            "Right- or left-handed about Axis.",
-                            Patterns::Selection("right|left"));
+          add_selection(prm,
+                        "Handedness",
+                        right_handed,
+                        {{"right", true}, {"left", false}},
+                        "Right- or left-handed about Axis.");
         }
 
         void
@@ -70,9 +72,8 @@ namespace pneuma
           std::vector<Point<3>> vertices;
           const double          phi_end = 2. * numbers::PI * turns;
           for (unsigned int i = 0; i <= n_elements; ++i)
-            vertices.push_back(circle.point(phi_end * i / n_elements,
-                                            advance,
-                                            handedness == "right"));
+            vertices.push_back(
+              circle.point(phi_end * i / n_elements, advance, right_handed));
           create_chain_mesh(vertices, false, tria);
         }
 
@@ -85,7 +86,7 @@ namespace pneuma
       private:
         CircularCurve circle;
         double        pitch = 0., angle_to_axis_degrees = 0., turns = 1.;
-        std::string   handedness = "right";
+        bool          right_handed = true;
         /// The axial advance per turn h [m].
         double advance = 0.;
       };

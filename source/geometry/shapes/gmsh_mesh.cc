@@ -12,6 +12,7 @@
 #include <deal.II/grid/manifold_lib.h>
 
 #include <pneuma/core/input_error.h>
+#include <pneuma/core/selection_parameter.h>
 #include <pneuma/geometry/gmsh_surface_reader.h>
 #include <pneuma/geometry/junctions.h>
 #include <pneuma/geometry/surface_geometry.h>
@@ -38,12 +39,15 @@ namespace pneuma
                             "Gmsh .msh file (format 2 or 4.1 ASCII), "
                             "relative to the working directory.",
                             Patterns::Anything());
-          prm.add_parameter("Orientation",
-                            orientation_mode,
-                            "Which side is the outside (pressure pushes "
-                            "outward).",
-                            Patterns::Selection(
-                              "as meshed|flipped|outward from interior point"));
+          add_selection(prm,
+                        "Orientation",
+                        orientation_mode,
+                        {{"as meshed", Orientation::as_meshed},
+                         {"flipped", Orientation::flipped},
+                         {"outward from interior point",
+                          Orientation::outward_from_interior_point}},
+                        "Which side is the outside (pressure pushes "
+                        "outward).");
           prm.add_parameter(
             "Curved regions",
             curved_text,
@@ -130,9 +134,9 @@ namespace pneuma
         double
         orientation(const Point<3> &x, const Tensor<1, 3> &n) const override
         {
-          if (orientation_mode == "as meshed")
+          if (orientation_mode == Orientation::as_meshed)
             return 1.;
-          if (orientation_mode == "flipped")
+          if (orientation_mode == Orientation::flipped)
             return -1.;
           const Point<3> c(interior[0], interior[1], interior[2]);
           return ((x - c) * n >= 0.) ? 1. : -1.;
@@ -140,7 +144,7 @@ namespace pneuma
         bool
         is_closed() const override
         {
-          return orientation_mode != "as meshed";
+          return orientation_mode != Orientation::as_meshed;
         }
 
         Tensor<1, 3>
@@ -225,7 +229,15 @@ namespace pneuma
         std::vector<Curved> curved;
         /// The "warp" $ElementData vector of every cell (empty: none).
         mutable std::vector<Tensor<1, 3>> cell_warp;
-        std::string         mesh_file, orientation_mode = "as meshed";
+        /// Which side is the outside.
+        enum class Orientation
+        {
+          as_meshed,
+          flipped,
+          outward_from_interior_point
+        };
+        std::string         mesh_file;
+        Orientation         orientation_mode = Orientation::as_meshed;
         std::vector<double> interior{0., 0., 0.};
         std::string         parameter = "Geometry/gmsh/Mesh file";
       };

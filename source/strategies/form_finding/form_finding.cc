@@ -1,14 +1,15 @@
 #include <pneuma/core/input_error.h>
 #include <pneuma/core/model.h>
 #include <pneuma/membrane/membrane_subsystem.h>
-#include <pneuma/solvers/form_finding.h>
 #include <pneuma/solvers/newton_solver.h>
+#include <pneuma/strategies/form_finding/form_finding.h>
+#include <pneuma/strategies/run.h>
 
 #include <iomanip>
 
 namespace pneuma
 {
-  namespace solvers
+  namespace strategies
   {
     using namespace dealii;
 
@@ -47,7 +48,7 @@ namespace pneuma
     }
 
     void
-    FormFinding::parse_parameters(ParameterHandler &)
+    FormFinding::parse_parameters(ParameterHandler &, const Stages &)
     {
       check_input(lambda >= 0. && lambda < 1.,
                   "Form finding/Homotopy factor",
@@ -79,54 +80,69 @@ namespace pneuma
       membrane->end_form_finding();
     }
 
-    FormFindingResult
-    FormFinding::run(Model                    &model,
-                     const NewtonSolver       &newton,
-                     const ConditionalOStream &out) const
+    Outcome
+    FormFinding::run(Run &run, const Segment &, const Outcome &start)
     {
-      FormFindingResult result;
-      auto             *membrane = model.find<membrane::MembraneSubsystem>();
+      Outcome outcome  = start;
+      Model  &model    = run.model;
+      auto   *membrane = model.find<membrane::MembraneSubsystem>();
       membrane->begin_form_finding(lambda);
       model.reconstrain();
       const double             diameter = membrane->reference_diameter();
       const ConditionalOStream quiet(std::cout, false);
-      out << "form finding (updated reference, lambda = " << lambda
-          << "):" << std::endl;
-      for (unsigned int k = 1; k <= max_updates; ++k)
+      run.out << "form finding (updated reference, lambda = " << lambda
+              << "):" << std::endl;
+      newton_iterations = 0;
+      bool converged    = false;
+      for (unsigned int k = 1; k <= max_updates && !converged; ++k)
         {
-          BorderedVector state     = model.initial_state();
-          const auto newton_result = newton.solve(model, state, quiet, false);
-          result.newton_iterations += newton_result.iterations;
-          if (!newton_result.converged)
+          solvers::BorderedVector state = model.initial_state();
+          const auto newton = run.newton.solve(model, state, quiet, false);
+          newton_iterations += newton.iterations;
+          if (!newton.converged)
             {
-              result.message = "the form finding's update " + std::to_string(k)
-                               + " did not converge ("
-                               + newton_result.failure_reason + ")";
+              outcome.message = "the form finding's update " + std::to_string(k)
+                                + " did not converge (" + newton.failure_reason
+                                + ")";
               break;
             }
-          result.last_change =
+          last_change =
             membrane->move_reference(model.ghost(state.field)) / diameter;
-          result.updates = k;
-          if (k <= 3 || k % 10 == 0 || result.last_change <= tolerance)
-            out << "  update " << std::setw(4) << k << ": largest move "
-                << std::scientific << std::setprecision(2) << result.last_change
-                << " of the diameter, " << newton_result.iterations
-                << " Newton iteration(s)" << std::defaultfloat << std::endl;
-          if (result.last_change <= tolerance)
-            {
-              result.converged = true;
-              break;
-            }
+          converged = last_change <= tolerance;
+          if (k <= 3 || k % 10 == 0 || converged)
+            run.out << "  update " << std::setw(4) << k << ": largest move "
+                    << std::scientific << std::setprecision(2) << last_change
+                    << " of the diameter, " << newton.iterations
+                    << " Newton iteration(s)" << std::defaultfloat << std::endl;
         }
-      if (!result.converged && result.message.empty())
-        result.message =
-          "the form finding did not converge in " + std::to_string(max_updates)
-          + " updates (Form finding/Maximum updates; last "
-            "move "
-          + std::to_string(result.last_change) + " of the diameter)";
+      if (!converged && outcome.message.empty())
+        outcome.message = "the form finding did not converge in "
+                          + std::to_string(max_updates)
+                          + " updates (Form finding/Maximum updates; last "
+                            "move "
+                          + std::to_string(last_change) + " of the diameter)";
+      outcome.exit_code = converged ? 0 : 2;
       membrane->end_form_finding();
       model.reconstrain();
-      return result;
+      return outcome;
     }
-  } // namespace solvers
+
+    void
+    FormFinding::add_summary(Statistics &row) const
+    {
+      const auto             run    = StatisticsGroup::run();
+      constexpr unsigned int counts = Statistics::summary;
+      row.add_count(run,
+                    "form_finding_newton_iterations",
+                    newton_iterations,
+                    counts);
+      row.add(run, "form_finding_last_move", "", last_change, counts);
+    }
+
+    PNEUMA_REGISTER_STRATEGY(FormFinding,
+                             "form finding",
+                             Placement::before_stages,
+                             "the shape of a prestressed membrane between "
+                             "its supports, by updated reference");
+  } // namespace strategies
 } // namespace pneuma

@@ -3,17 +3,19 @@
 /**
  * @file
  * The Simulator: one pneuma run. It reads the parameters of the Model (the
- * coupled subsystems), of the solution strategy (the static load path) and
- * of the outputs, runs the strategy over the model, and writes
- * history.csv, summary.json, the VTU files and the regression-test output
- * from one statistics table (doc/architecture.md "Data flow"). The header
- * is light so that tests and the main program compile fast.
+ * coupled subsystems), of the stages and their solution strategies
+ * (strategies/solution_strategy.h) and of the outputs, runs the strategies
+ * over the model in turn, and writes history.csv, summary.json, the VTU
+ * files, checkpoints and the regression-test output from one statistics
+ * table (doc/architecture.md "Data flow"). The header is light so that
+ * tests and the main program compile fast.
  */
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <pneuma/core/input_layout.h>
+#include <pneuma/core/parse_input.h>
 #include <pneuma/core/statistics.h>
 
 #include <memory>
@@ -22,6 +24,12 @@
 
 namespace pneuma
 {
+  class Model;
+  namespace solvers
+  {
+    struct BorderedVector;
+  }
+
   /// Exit codes of a run (README, doc/user-guide.md).
   enum ExitCode : int
   {
@@ -85,7 +93,8 @@ namespace pneuma
     void
     setup();
 
-    /// Run the load path; returns the result (and writes the outputs).
+    /// Run the stages' strategies; returns the result (and writes the
+    /// outputs).
     RunResult
     run();
 
@@ -102,24 +111,16 @@ namespace pneuma
                   const double h,
                   const bool   path_constraint = false);
 
+    /// The coupled model (set up by setup()), for tests and tools.
+    Model &
+    model();
+    /// The last converged state of the last run().
+    const solvers::BorderedVector &
+    final_state() const;
+
   private:
     class Impl;
     std::unique_ptr<Impl> impl;
   };
 
-  /**
-   * Read @p file (.prm or .json) into @p prm (declared) and apply the
-   * "Path/To/Entry=value" @p overrides; throws InputError naming the file
-   * or parameter.
-   */
-  void
-  parse_input(dealii::ParameterHandler       &prm,
-              const std::string              &file,
-              const std::vector<std::string> &overrides = {});
-
-  /// Same, for parameter text in .prm syntax (tests).
-  void
-  parse_input_text(dealii::ParameterHandler       &prm,
-                   const std::string              &text,
-                   const std::vector<std::string> &overrides = {});
 } // namespace pneuma

@@ -17,42 +17,26 @@
  * prestress in it.
  */
 
-#include <deal.II/base/conditional_ostream.h>
-#include <deal.II/base/parameter_handler.h>
+#include <pneuma/strategies/solution_strategy.h>
 
 #include <string>
 
 namespace pneuma
 {
-  class Model;
-
-  namespace solvers
+  namespace strategies
   {
-    class NewtonSolver;
-
-    /// The outcome of a form finding.
-    struct FormFindingResult
-    {
-      bool         converged         = false;
-      unsigned int updates           = 0;
-      unsigned int newton_iterations = 0;
-      /// The largest displacement of the last update, relative to the
-      /// diameter of the surface.
-      double      last_change = 0.;
-      std::string message;
-    };
-
-    /// The "Form finding" subsection and the iteration.
-    class FormFinding
+    /// "Form finding": placed before the stages.
+    class FormFinding : public SolutionStrategy
     {
     public:
       void
-      declare_parameters(dealii::ParameterHandler &prm);
+      declare_parameters(dealii::ParameterHandler &prm) override;
       void
-      parse_parameters(dealii::ParameterHandler &prm);
+      parse_parameters(dealii::ParameterHandler &prm,
+                       const Stages             &stages) override;
 
       bool
-      enabled() const
+      enabled() const override
       {
         return on;
       }
@@ -61,20 +45,27 @@ namespace pneuma
       /// form-found (another subsystem than the membrane, no prestress,
       /// rigid plates, adaptive refinement).
       void
-      check(Model &model) const;
+      check(Model &model) const override;
 
-      /// Find the shape; the membrane of @p model keeps it as its
-      /// reference surface, and its own laws again.
-      FormFindingResult
-      run(Model                            &model,
-          const NewtonSolver               &newton,
-          const dealii::ConditionalOStream &out) const;
+      /// Find the shape; the membrane keeps it as its reference surface,
+      /// and its own laws again. Fails (exit 2) if the updates do not
+      /// converge.
+      Outcome
+      run(Run &run, const Segment &segment, const Outcome &start) override;
+
+      /// The Newton iterations of the updates and the last move.
+      void
+      add_summary(Statistics &row) const override;
 
     private:
       bool         on          = false;
       double       lambda      = 0.5;
       unsigned int max_updates = 200;
       double       tolerance   = 1e-6;
+      /// The outcome: Newton iterations of all updates, the largest move
+      /// of the last update relative to the surface's diameter.
+      unsigned int newton_iterations = 0;
+      double       last_change       = 0.;
     };
-  } // namespace solvers
+  } // namespace strategies
 } // namespace pneuma

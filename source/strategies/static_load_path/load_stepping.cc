@@ -1,23 +1,20 @@
 #include <deal.II/base/utilities.h>
 
 #include <pneuma/core/input_error.h>
-#include <pneuma/solvers/load_stepping.h>
+#include <pneuma/strategies/static_load_path/load_stepping.h>
 
 #include <algorithm>
 
 namespace pneuma
 {
-  namespace solvers
+  namespace strategies
   {
+    using namespace dealii;
+
     void
     LoadStepping::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Load stepping");
-      prm.add_parameter("Stage end times",
-                        stage_ends,
-                        "Pseudo times at which the load stages end, "
-                        "increasing; the run ends at the last one.",
-                        Patterns::List(Patterns::Double(0.), 1));
       prm.add_parameter("Initial increment",
                         initial_increment,
                         "First pseudo-time increment; > 0.",
@@ -54,15 +51,10 @@ namespace pneuma
     }
 
     void
-    LoadStepping::parse_parameters(ParameterHandler &)
+    LoadStepping::parse_parameters(ParameterHandler &, const Stages &stages)
     {
+      all_stages          = &stages;
       const std::string p = "Load stepping/";
-      check_input(stage_ends.front() > 0.
-                    && std::is_sorted(stage_ends.begin(), stage_ends.end())
-                    && std::adjacent_find(stage_ends.begin(), stage_ends.end())
-                         == stage_ends.end(),
-                  p + "Stage end times",
-                  "must be positive and strictly increasing");
       check_input(initial_increment > 0.,
                   p + "Initial increment",
                   "must be > 0");
@@ -71,10 +63,10 @@ namespace pneuma
                   p + "Minimum increment",
                   "must be > 0 and <= Initial increment");
       check_input(maximum_increments.size() == 1
-                    || maximum_increments.size() == stage_ends.size(),
+                    || maximum_increments.size() == stages.n_stages(),
                   p + "Maximum increment",
                   "needs one value, or one per stage ("
-                    + std::to_string(stage_ends.size())
+                    + std::to_string(stages.n_stages())
                     + " stages in Stage end times), not "
                     + std::to_string(maximum_increments.size()));
       check_input(maximum_increments.front() >= initial_increment,
@@ -87,20 +79,10 @@ namespace pneuma
                   "must be >= Minimum increment in every stage");
     }
 
-    unsigned int
-    LoadStepping::stage_of(const double t) const
-    {
-      const double eps = 1e-12 * end_time();
-      for (unsigned int s = 0; s < stage_ends.size(); ++s)
-        if (t < stage_ends[s] - eps)
-          return s;
-      return stage_ends.size() - 1;
-    }
-
     double
     LoadStepping::next_time(const double t, const double dt) const
     {
-      const double stage_end = stage_ends[stage_of(t)];
+      const double stage_end = all_stages->end(all_stages->stage_of(t));
       const double target    = t + dt;
       // Do not leave a sliver shorter than a tenth of a step.
       if (target > stage_end - 0.1 * dt)
@@ -116,13 +98,8 @@ namespace pneuma
     {
       const double next =
         iterations > easy_iterations ? dt : dt * growth_factor;
-      return capped ? std::min(next, maximum(stage_of(t))) : next;
+      return capped ? std::min(next, maximum(all_stages->stage_of(t))) : next;
     }
 
-    bool
-    LoadStepping::finished(const double t) const
-    {
-      return t >= end_time() * (1. - 1e-12);
-    }
-  } // namespace solvers
+  } // namespace strategies
 } // namespace pneuma

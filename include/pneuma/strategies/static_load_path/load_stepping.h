@@ -2,61 +2,40 @@
 
 /**
  * @file
- * Adaptive load stepping in pseudo time through a sequence of load stages.
- * Load curves are functions of the pseudo time t; a stage is an interval
- * [t_{k-1}, t_k] (e.g. inflate on [0,1], then load transversely on [1,2]).
- * A step whose Newton iteration fails is cut back; a step that converged in
- * few iterations lets the next one grow.
+ * Adaptive load stepping of the static load path through its stages
+ * (strategies/stages.h): a step whose Newton iteration fails is cut back;
+ * a step that converged in few iterations lets the next one grow.
  */
 
 #include <deal.II/base/parameter_handler.h>
+
+#include <pneuma/strategies/stages.h>
 
 #include <algorithm>
 #include <vector>
 
 namespace pneuma
 {
-  namespace solvers
+  namespace strategies
   {
-    using namespace dealii;
-
-    /// "Load stepping" subsection and the increment control.
+    /// "Load stepping" increments and the increment control.
     class LoadStepping
     {
     public:
       /// Declare the entries, bound to the members (their initial values
       /// are the defaults).
       void
-      declare_parameters(ParameterHandler &prm);
+      declare_parameters(dealii::ParameterHandler &prm);
+      /// Check them against the run's @p stages (kept).
       void
-      parse_parameters(ParameterHandler &prm);
+      parse_parameters(dealii::ParameterHandler &prm, const Stages &stages);
 
-      /// End of the last stage.
-      double
-      end_time() const
+      /// The stages (after parse_parameters()).
+      const Stages &
+      stages() const
       {
-        return stage_ends.back();
+        return *all_stages;
       }
-      /// Number of stages.
-      unsigned int
-      n_stages() const
-      {
-        return stage_ends.size();
-      }
-      /// Start and end of stage @p s.
-      double
-      stage_start(const unsigned int s) const
-      {
-        return s == 0 ? 0. : stage_ends[s - 1];
-      }
-      double
-      stage_end(const unsigned int s) const
-      {
-        return stage_ends[s];
-      }
-      /// Index of the stage that contains (t, t + epsilon].
-      unsigned int
-      stage_of(const double t) const;
       /// Target of the next step from @p t with increment @p dt, never
       /// stepping over a stage end.
       double
@@ -97,16 +76,13 @@ namespace pneuma
         return maximum_increments.size() == 1 ? maximum_increments.front()
                                               : maximum_increments[stage];
       }
-      /// True if @p t is (numerically) at or beyond the end.
-      bool
-      finished(const double t) const;
 
     private:
-      std::vector<double> stage_ends{1.};
+      const Stages       *all_stages = nullptr;
       std::vector<double> maximum_increments{1.};
       double              initial_increment = 0.25, minimum_increment = 1e-4,
              growth_factor = 1.5, cut_back_factor = 0.5;
       unsigned int easy_iterations = 5;
     };
-  } // namespace solvers
+  } // namespace strategies
 } // namespace pneuma
