@@ -235,6 +235,279 @@ namespace pneuma
       out << "   |du|/|u|    shift     step\n";
     }
 
+    /**
+     * The state of one phase's iteration: its vectors (allocated once),
+     * |r| at the iterate, the Newton direction, the line search's step,
+     * the watchdog and what the convergence tests remember.
+     */
+    struct NewtonSolver::Iteration
+    {
+      Iteration(const BorderedVector &u,
+                const Phase          &phase,
+                const double          r_ref,
+                const unsigned int    watchdog_steps)
+        : phase(phase)
+        , r_ref(r_ref)
+        , tolerance(phase.tolerance * r_ref)
+        , pure(phase.shift == 0.)
+        , residual(u)
+        , trial(u)
+        , du(u)
+        , u_trial(u)
+        , Lx(u)
+        , offset(u)
+        , watchdog(watchdog_steps)
+      {
+      }
+
+      const Phase &phase;
+      const double r_ref, tolerance;
+      /// No shift: the unregularised equations (the tests that accept a
+      /// state short of the residual tolerance apply to these only).
+      const bool pure;
+      // du must survive the line search: a backtracking step reuses it;
+      // Lx and offset are the scratch of the shift term.
+      BorderedVector residual, trial, du, u_trial, Lx, offset;
+      /// |r| at the iterate and |du| of the direction.
+      double r_norm = 0., du_norm = 0.;
+      /// Block norms of the first residual, for the table.
+      std::vector<double> block_reference;
+      /// |du| of the last full, unwatched step (0: none), for the
+      /// predicted-update test.
+      double last_full_update = 0.;
+      /// The next line search resumes along the direction of a failed
+      /// watch's saved state.
+      bool     resume = false;
+      Watchdog watchdog;
+      Step     step;
+    };
+
+    double
+    NewtonSolver::evaluate(NonlinearProblem     &problem,
+                           Iteration            &state,
+                           const BorderedVector &x,
+                           BorderedVector       &r) const
+    {
+      // r_s(x) = r(x) + s L (x - x_anchor): the regularised residual.
+      problem.assemble(x, r);
+      if (state.phase.shift > 0.)
+        {
+          state.offset = x;
+          state.offset -= state.phase.anchor;
+          problem.laplacian_vmult(state.offset, state.Lx);
+          r.add(state.phase.shift, state.Lx);
+        }
+      return r.l2_norm();
+    }
+
+    NewtonSolver::Outcome
+    NewtonSolver::test_state(NonlinearProblem &problem,
+                             const Iteration  &state,
+                             const unsigned    it,
+                             NewtonResult     &result) const
+    {
+      if (!std::isfinite(state.r_norm))
+        {
+          result.failure_reason = "residual is not finite";
+          return Outcome::failed;
+        }
+      // A state that meets the tolerance at once (a stage whose loads no
+      // longer change it) costs no factorization.
+      if (state.r_norm <= state.tolerance)
+        {
+          result.convergence_test = "residual";
+          return Outcome::converged;
+        }
+      if (problem.interrupted())
+        {
+          result.failure_reason = "interrupted";
+          return Outcome::failed;
+        }
+      if (it >= state.phase.max_iterations)
+        {
+          result.failure_reason = "no convergence in "
+                                  + std::to_string(state.phase.max_iterations)
+                                  + " iterations";
+          return Outcome::failed;
+        }
+      return Outcome::go_on;
+    }
+
+    NewtonSolver::Outcome
+    NewtonSolver::newton_direction(NonlinearProblem         &problem,
+                                   const BorderedVector     &u,
+                                   Iteration                &state,
+                                   const ConditionalOStream &out,
+                                   NewtonResult             &result) const
+    {
+      // After a failed watch: the direction from the state it restored.
+      if (state.resume)
+        {
+          state.du      = state.watchdog.saved_step();
+          state.du_norm = state.du.l2_norm();
+          return Outcome::go_on;
+        }
+      state.du = 0.;
+      state.residual *= -1.;
+      try
+        {
+          problem.set_linear_tolerance(
+            forcing_term(state.r_norm / state.r_ref));
+          problem.solve_linear(state.phase.shift, state.residual, state.du);
+        }
+      catch (const std::exception &e)
+        {
+          // The whole message (without deal.II's frame and stack trace)
+          // reaches the log and the failure reason.
+          std::string text = e.what();
+          const auto  info = text.find("Additional information:");
+          if (info != std::string::npos)
+            text = text.substr(info + 23);
+          text = text.substr(0, text.find("Stacktrace:"));
+          text = std::regex_replace(text, std::regex("-{3,}"), " ");
+          const std::string message =
+            Utilities::trim(std::regex_replace(text, std::regex("\\s+"), " "));
+          result.failure_reason = "linear solver failed: " + message;
+          if (print_table)
+            out << "    (linear solver: " << message << ")\n";
+          return Outcome::failed;
+        }
+      ++result.iterations;
+      state.du_norm = state.du.l2_norm();
+      if (!std::isfinite(state.du_norm))
+        {
+          result.failure_reason = "linear solver failed";
+          return Outcome::failed;
+        }
+      if (state.pure && state.du_norm <= update_tolerance * u.l2_norm()
+          && state.r_norm <= floor_update * state.tolerance)
+        {
+          if (print_table)
+            out << "    " << std::setw(4) << result.iterations
+                << std::scientific << std::setprecision(3) << "  "
+                << state.r_norm / state.r_ref << "  (|du|/|u| = "
+                << state.du_norm / std::max(u.l2_norm(), 1e-300)
+                << ": the update has vanished)" << std::defaultfloat
+                << std::endl;
+          result.convergence_test = "update at the round-off floor";
+          return Outcome::converged;
+        }
+      return Outcome::go_on;
+    }
+
+    void
+    NewtonSolver::search_line(NonlinearProblem     &problem,
+                              const BorderedVector &u,
+                              Iteration            &state) const
+    {
+      // Along du, with the watchdog; resumed at half the step after a
+      // failed watch.
+      Step &step = state.step;
+      step       = Step();
+      if (state.resume)
+        step.alpha = backtrack;
+      for (unsigned int ls = state.resume ? 1 : 0;
+           ls <= (line_search ? max_line_search : 0);
+           ++ls, step.alpha *= backtrack)
+        {
+          state.u_trial = u;
+          state.u_trial.add(step.alpha, state.du);
+          step.norm = evaluate(problem, state, state.u_trial, state.trial);
+          if (!line_search
+              || (std::isfinite(step.norm)
+                  && (step.norm <= (1. - armijo * step.alpha) * state.r_norm
+                      || step.norm <= state.tolerance)))
+            {
+              step.accepted = true;
+              return;
+            }
+          if (ls == 0 && state.watchdog.may_take(step.norm, state.r_norm))
+            {
+              state.watchdog.start(u, state.r_norm, state.du);
+              step.accepted = step.watched = true;
+              return;
+            }
+        }
+    }
+
+    void
+    NewtonSolver::print_iteration(NonlinearProblem         &problem,
+                                  const Iteration          &state,
+                                  const ConditionalOStream &out,
+                                  const NewtonResult       &result) const
+    {
+      if (!print_table)
+        return;
+      const Step &step = state.step;
+      out << "    " << std::setw(4) << result.iterations << std::scientific
+          << std::setprecision(3) << "  " << step.norm / state.r_ref;
+      const auto blocks = problem.block_norms(state.trial);
+      for (unsigned int b = 0; b < blocks.size(); ++b)
+        out << "  "
+            << blocks[b]
+                 / (state.block_reference[b] > 1e-8 * state.r_ref
+                      ? state.block_reference[b]
+                      : state.r_ref);
+      out << "  "
+          << step.alpha * state.du_norm
+               / std::max(state.u_trial.l2_norm(), 1e-300)
+          << "  " << state.phase.shift << "  " << std::defaultfloat
+          << std::setprecision(3) << (step.accepted ? step.alpha : 0.)
+          << (step.watched ? " (watchdog)" : "") << std::endl;
+    }
+
+    NewtonSolver::Outcome
+    NewtonSolver::update(BorderedVector           &u,
+                         Iteration                &state,
+                         const ConditionalOStream &out,
+                         NewtonResult             &result) const
+    {
+      const Step &step = state.step;
+      u                = state.u_trial;
+      state.residual   = state.trial;
+      state.r_norm     = step.norm;
+      // The next update of a quadratic iteration, |du_{k+1}| ~ C |du_k|^2
+      // with C = |du_k|/|du_{k-1}|^2 from the last two full steps: once it
+      // is below the update tolerance the state is as accurate as the
+      // update test would find it, without the factorization that
+      // computes it.
+      const double du = state.du_norm, last = state.last_full_update;
+      const bool   full = step.alpha == 1. && !step.watched;
+      if (state.pure && full && last > 0. && du <= contraction * last
+          && state.r_norm > state.tolerance
+          && state.r_norm <= floor_update * state.tolerance
+          && du * du * du <= update_tolerance * u.l2_norm() * last * last)
+        {
+          if (print_table)
+            out << "    (the next update is predicted at |du|/|u| = "
+                << std::scientific << std::setprecision(3)
+                << du * du * du / (last * last * std::max(u.l2_norm(), 1e-300))
+                << std::defaultfloat << ")\n";
+          result.residual_history.push_back(state.r_norm);
+          result.convergence_test = "update predicted below tolerance";
+          return Outcome::converged;
+        }
+      state.last_full_update = full ? du : 0.;
+      state.resume           = false;
+      if (state.watchdog.failed(state.r_norm))
+        {
+          // The residual vector is that of the last iterate until the
+          // resumed line search accepts a step (it is not needed before).
+          u                      = state.watchdog.saved_state();
+          state.r_norm           = state.watchdog.saved_residual_norm();
+          state.last_full_update = 0.;
+          state.resume           = true;
+          if (print_table)
+            out << "    (watchdog: back to |r|/|r_ref| = " << std::scientific
+                << std::setprecision(3) << state.r_norm / state.r_ref
+                << std::defaultfloat << ", on along its step)\n";
+          return Outcome::go_on;
+        }
+      if (state.pure)
+        result.residual_history.push_back(state.r_norm);
+      return Outcome::go_on;
+    }
+
     bool
     NewtonSolver::iterate(NonlinearProblem         &problem,
                           BorderedVector           &u,
@@ -244,177 +517,33 @@ namespace pneuma
                           NewtonResult             &result,
                           const BorderedVector     *assembled) const
     {
-      BorderedVector residual(u), trial(u), du(u), u_trial(u), Lx(u), offset(u);
-      // r_s(u) = r(u) + s L (u - u_anchor): the regularised residual, with
-      // its own scratch vector (du must survive the line search: a
-      // backtracking step reuses it).
-      const auto evaluate = [&](const BorderedVector &x, BorderedVector &r) {
-        problem.assemble(x, r);
-        if (phase.shift > 0.)
-          {
-            offset = x;
-            offset -= phase.anchor;
-            problem.laplacian_vmult(offset, Lx);
-            r.add(phase.shift, Lx);
-          }
-        return r.l2_norm();
-      };
-      const double tolerance = phase.tolerance * r_ref;
-      const bool   pure      = phase.shift == 0.;
-      Watchdog     watchdog(line_search ? watchdog_steps : 0);
-      // Block norms of the first residual, for the table.
-      std::vector<double> block_reference;
-      // |du| of the last full, unwatched step (0: none), for the
-      // predicted-update test.
-      double last_full_update = 0.;
-      // The next line search resumes along the direction of a failed
-      // watch's saved state.
-      bool resume = false;
-
+      Iteration state(u, phase, r_ref, line_search ? watchdog_steps : 0);
       // The caller's assembly at u serves the first iteration (at the
       // anchor of a shifted phase the shift term vanishes).
-      double r_norm = 0.;
       if (assembled)
         {
-          residual = *assembled;
-          r_norm   = residual.l2_norm();
+          state.residual = *assembled;
+          state.r_norm   = state.residual.l2_norm();
         }
       else
-        r_norm = evaluate(u, residual);
+        state.r_norm = evaluate(problem, state, u, state.residual);
       for (unsigned int it = 0;; ++it)
         {
-          if (print_table && block_reference.empty())
-            block_reference = problem.block_norms(residual);
+          if (print_table && state.block_reference.empty())
+            state.block_reference = problem.block_norms(state.residual);
           // 1. Convergence and failure tests.
-          if (!std::isfinite(r_norm))
+          Outcome outcome = test_state(problem, state, it, result);
+          // 2. The Newton direction.
+          if (outcome == Outcome::go_on)
+            outcome = newton_direction(problem, u, state, out, result);
+          if (outcome != Outcome::go_on)
+            return outcome == Outcome::converged;
+          // 3. Line search.
+          search_line(problem, u, state);
+          print_iteration(problem, state, out, result);
+          if (!state.step.accepted)
             {
-              result.failure_reason = "residual is not finite";
-              return false;
-            }
-          // A state that meets the tolerance at once (a stage whose loads
-          // no longer change it) costs no factorization.
-          if (r_norm <= tolerance)
-            {
-              result.convergence_test = "residual";
-              return true;
-            }
-          if (problem.interrupted())
-            {
-              result.failure_reason = "interrupted";
-              return false;
-            }
-          if (it >= phase.max_iterations)
-            {
-              result.failure_reason = "no convergence in "
-                                      + std::to_string(phase.max_iterations)
-                                      + " iterations";
-              return false;
-            }
-
-          // 2. The Newton direction, or after a failed watch the one from
-          //    the state it restored.
-          double du_norm = 0.;
-          if (resume)
-            {
-              du      = watchdog.saved_step();
-              du_norm = du.l2_norm();
-            }
-          else
-            {
-              du = 0.;
-              residual *= -1.;
-              try
-                {
-                  problem.set_linear_tolerance(forcing_term(r_norm / r_ref));
-                  problem.solve_linear(phase.shift, residual, du);
-                }
-              catch (const std::exception &e)
-                {
-                  // The whole message (without deal.II's frame and stack
-                  // trace) reaches the log and the failure reason.
-                  std::string text = e.what();
-                  const auto  info = text.find("Additional information:");
-                  if (info != std::string::npos)
-                    text = text.substr(info + 23);
-                  text = text.substr(0, text.find("Stacktrace:"));
-                  text = std::regex_replace(text, std::regex("-{3,}"), " ");
-                  const std::string message = Utilities::trim(
-                    std::regex_replace(text, std::regex("\\s+"), " "));
-                  result.failure_reason = "linear solver failed: " + message;
-                  if (print_table)
-                    out << "    (linear solver: " << message << ")\n";
-                  return false;
-                }
-              ++result.iterations;
-              du_norm = du.l2_norm();
-              if (!std::isfinite(du_norm))
-                {
-                  result.failure_reason = "linear solver failed";
-                  return false;
-                }
-              if (pure && du_norm <= update_tolerance * u.l2_norm()
-                  && r_norm <= floor_update * tolerance)
-                {
-                  if (print_table)
-                    out << "    " << std::setw(4) << result.iterations
-                        << std::scientific << std::setprecision(3) << "  "
-                        << r_norm / r_ref << "  (|du|/|u| = "
-                        << du_norm / std::max(u.l2_norm(), 1e-300)
-                        << ": the update has vanished)" << std::defaultfloat
-                        << std::endl;
-                  result.convergence_test = "update at the round-off floor";
-                  return true;
-                }
-            }
-
-          // 3. Line search (with the watchdog) along du; resumed at half the
-          //    step after a failed watch.
-          Step step;
-          if (resume)
-            step.alpha = backtrack;
-          for (unsigned int ls = resume ? 1 : 0;
-               ls <= (line_search ? max_line_search : 0);
-               ++ls, step.alpha *= backtrack)
-            {
-              u_trial = u;
-              u_trial.add(step.alpha, du);
-              step.norm = evaluate(u_trial, trial);
-              if (!line_search
-                  || (std::isfinite(step.norm)
-                      && (step.norm <= (1. - armijo * step.alpha) * r_norm
-                          || step.norm <= tolerance)))
-                {
-                  step.accepted = true;
-                  break;
-                }
-              if (ls == 0 && watchdog.may_take(step.norm, r_norm))
-                {
-                  watchdog.start(u, r_norm, du);
-                  step.accepted = step.watched = true;
-                  break;
-                }
-            }
-          if (print_table)
-            {
-              out << "    " << std::setw(4) << result.iterations
-                  << std::scientific << std::setprecision(3) << "  "
-                  << step.norm / r_ref;
-              const auto blocks = problem.block_norms(trial);
-              for (unsigned int b = 0; b < blocks.size(); ++b)
-                out << "  "
-                    << blocks[b]
-                         / (block_reference[b] > 1e-8 * r_ref
-                              ? block_reference[b]
-                              : r_ref);
-              out << "  "
-                  << step.alpha * du_norm / std::max(u_trial.l2_norm(), 1e-300)
-                  << "  " << phase.shift << "  " << std::defaultfloat
-                  << std::setprecision(3) << (step.accepted ? step.alpha : 0.)
-                  << (step.watched ? " (watchdog)" : "") << std::endl;
-            }
-          if (!step.accepted)
-            {
-              if (pure && r_norm <= floor_descent * tolerance)
+              if (state.pure && state.r_norm <= floor_descent * state.tolerance)
                 {
                   result.convergence_test = "no descent at the round-off floor";
                   return true;
@@ -422,54 +551,9 @@ namespace pneuma
               result.failure_reason = "line search failed";
               return false;
             }
-
-          // 4. Update.
-          u        = u_trial;
-          residual = trial;
-          r_norm   = step.norm;
-          // The next update of a quadratic iteration, |du_{k+1}| ~
-          // C |du_k|^2 with C = |du_k|/|du_{k-1}|^2 from the last two full
-          // steps: once it is below the update tolerance the state is as
-          // accurate as the update test would find it, without the
-          // factorization that computes it.
-          const bool full = step.alpha == 1. && !step.watched;
-          if (pure && full && last_full_update > 0.
-              && du_norm <= contraction * last_full_update && r_norm > tolerance
-              && r_norm <= floor_update * tolerance
-              && du_norm * du_norm * du_norm <= update_tolerance * u.l2_norm()
-                                                  * last_full_update
-                                                  * last_full_update)
-            {
-              if (print_table)
-                out << "    (the next update is predicted at |du|/|u| = "
-                    << std::scientific << std::setprecision(3)
-                    << du_norm * du_norm * du_norm
-                         / (last_full_update * last_full_update
-                            * std::max(u.l2_norm(), 1e-300))
-                    << std::defaultfloat << ")\n";
-              result.residual_history.push_back(r_norm);
-              result.convergence_test = "update predicted below tolerance";
-              return true;
-            }
-          last_full_update = full ? du_norm : 0.;
-          resume           = false;
-          if (watchdog.failed(r_norm))
-            {
-              // The residual vector is that of the last iterate until the
-              // resumed line search accepts a step (it is not needed
-              // before).
-              u                = watchdog.saved_state();
-              r_norm           = watchdog.saved_residual_norm();
-              last_full_update = 0.;
-              resume           = true;
-              if (print_table)
-                out << "    (watchdog: back to |r|/|r_ref| = "
-                    << std::scientific << std::setprecision(3) << r_norm / r_ref
-                    << std::defaultfloat << ", on along its step)\n";
-              continue;
-            }
-          if (pure)
-            result.residual_history.push_back(r_norm);
+          // 4. Update, or back to the watchdog's saved state.
+          if (update(u, state, out, result) == Outcome::converged)
+            return true;
         }
     }
 

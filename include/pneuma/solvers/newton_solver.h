@@ -188,11 +188,22 @@ namespace pneuma
         double tolerance = 0.;
       };
 
-      /// Newton iterations of @p phase from @p u. @p assembled: the
-      /// residual at @p u that the problem has just assembled (with its
-      /// tangent), so that the first iteration does not assemble again
-      /// (in a shifted phase @p u must be its anchor, where the shift term
-      /// vanishes).
+      /// The state of one phase's iteration (newton_solver.cc).
+      struct Iteration;
+      /// What a step of the iteration decided.
+      enum class Outcome
+      {
+        go_on,
+        converged,
+        failed
+      };
+
+      /// Newton iterations of @p phase from @p u, in named steps:
+      /// test_state(), newton_direction(), search_line(), update(). @p
+      /// assembled: the residual at @p u that the problem has just assembled
+      /// (with its tangent), so that the first iteration does not assemble
+      /// again (in a shifted phase @p u must be its anchor, where the shift
+      /// term vanishes).
       bool
       iterate(NonlinearProblem         &problem,
               BorderedVector           &u,
@@ -201,6 +212,54 @@ namespace pneuma
               const ConditionalOStream &out,
               NewtonResult             &result,
               const BorderedVector     *assembled = nullptr) const;
+
+      /// The residual of the phase at @p x into @p r (with the shift term
+      /// s L (x - anchor)); returns |r|.
+      double
+      evaluate(NonlinearProblem     &problem,
+               Iteration            &state,
+               const BorderedVector &x,
+               BorderedVector       &r) const;
+
+      /// The convergence and failure tests of the state at iteration
+      /// @p it: the residual, a non-finite residual, an interrupt, the
+      /// iteration limit.
+      Outcome
+      test_state(NonlinearProblem &problem,
+                 const Iteration  &state,
+                 const unsigned    it,
+                 NewtonResult     &result) const;
+
+      /// The Newton direction (one linear solve), or after a failed watch
+      /// the saved one; the test "update at the round-off floor".
+      Outcome
+      newton_direction(NonlinearProblem         &problem,
+                       const BorderedVector     &u,
+                       Iteration                &state,
+                       const ConditionalOStream &out,
+                       NewtonResult             &result) const;
+
+      /// Armijo backtracking along the direction from @p u, with the
+      /// watchdog; the step in state.step.
+      void
+      search_line(NonlinearProblem     &problem,
+                  const BorderedVector &u,
+                  Iteration            &state) const;
+
+      /// The row of the convergence table.
+      void
+      print_iteration(NonlinearProblem         &problem,
+                      const Iteration          &state,
+                      const ConditionalOStream &out,
+                      const NewtonResult       &result) const;
+
+      /// Accept the step (the test "update predicted below tolerance"),
+      /// or restore the watchdog's saved state.
+      Outcome
+      update(BorderedVector           &u,
+             Iteration                &state,
+             const ConditionalOStream &out,
+             NewtonResult             &result) const;
 
       /// The stiffened start: u and r (assembled at u) advance by the
       /// solve with K + s L if that lowers |r|.
