@@ -94,6 +94,145 @@ namespace pneuma
         }
       return true;
     }
+    /// Where (global row i, global column j) is summed in a matrix: its
+    /// position in the values (owned row; `missing` if the pattern lacks
+    /// it), or -(s + 1) for the slot s of a row owned elsewhere (added in
+    /// flush()), the slot appended to @p nonlocal.
+    class MatrixPositions::Lookup
+    {
+    public:
+      static constexpr std::ptrdiff_t missing =
+        std::numeric_limits<std::ptrdiff_t>::min();
+
+      Lookup(const SparseMatrix                                      &matrix,
+             std::vector<std::pair<dealii::types::global_dof_index,
+                                   dealii::types::global_dof_index>> &nonlocal)
+        : rows(matrix.trilinos_matrix().RowMap())
+        , cols(matrix.trilinos_matrix().ColMap())
+        , nonlocal(nonlocal)
+      {
+        double *vals = nullptr;
+        matrix.trilinos_matrix().ExtractCrsDataPointers(offsets, indices, vals);
+      }
+
+      std::ptrdiff_t
+      operator()(const dealii::types::global_dof_index i,
+                 const dealii::types::global_dof_index j)
+      {
+        const int r = row(i);
+        if (r < 0)
+          {
+            const auto it = slots.emplace(std::make_pair(i, j), slots.size());
+            if (it.second)
+              nonlocal.emplace_back(i, j);
+            return -(it.first->second + 1);
+          }
+        const int c = cols.LID(static_cast<int_type>(j));
+        if (c < 0)
+          return missing;
+        const int *begin = indices + offsets[r];
+        const int *end   = indices + offsets[r + 1];
+        const int *p     = std::is_sorted(begin, end)
+                             ? std::lower_bound(begin, end, c)
+                             : std::find(begin, end, c);
+        return p == end || *p != c ? missing : std::ptrdiff_t(p - indices);
+      }
+
+      /// The local row of global row @p i (negative: not owned).
+      int
+      row(const dealii::types::global_dof_index i) const
+      {
+        return rows.LID(static_cast<int_type>(i));
+      }
+
+    private:
+      using int_type = dealii::TrilinosWrappers::types::int_type;
+      const Epetra_BlockMap &rows;
+      const Epetra_BlockMap &cols;
+      int                   *offsets = nullptr, *indices = nullptr;
+      std::map<std::pair<dealii::types::global_dof_index,
+                         dealii::types::global_dof_index>,
+               std::ptrdiff_t>
+                                                               slots;
+      std::vector<std::pair<dealii::types::global_dof_index,
+                            dealii::types::global_dof_index>> &nonlocal;
+    };
+
+    bool
+    MatrixPositions::condense(
+      const dealii::types::global_dof_index        *cell_dofs,
+      const unsigned int                            n_dofs,
+      const dealii::AffineConstraints<double>      &constraints,
+      Lookup                                       &position,
+      std::vector<dealii::types::global_dof_index> &targets,
+      Condensed                                    &c) const
+    {
+      // The cell's targets: its unconstrained dofs and the masters of its
+      // constrained ones (closed, homogeneous lines only).
+      bool any = false, usable = true;
+      targets.clear();
+      for (unsigned int i = 0; i < n_dofs && usable; ++i)
+        {
+          const auto d = cell_dofs[i];
+          if (!constraints.is_constrained(d))
+            {
+              targets.push_back(d);
+              continue;
+            }
+          any = true;
+          if (constraints.is_inhomogeneously_constrained(d))
+            usable = false;
+          else
+            for (const auto &entry : *constraints.get_constraint_entries(d))
+              {
+                if (constraints.is_constrained(entry.first))
+                  usable = false; // not closed
+                targets.push_back(entry.first);
+              }
+        }
+      if (!any || !usable)
+        return false;
+      std::sort(targets.begin(), targets.end());
+      targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
+      const unsigned int n_t = targets.size();
+      c.target_rows.resize(n_t);
+      c.weights.assign(std::size_t(n_dofs) * n_t, 0.);
+      c.pair_positions.resize(std::size_t(n_t) * n_t);
+      const auto target = [&](const dealii::types::global_dof_index d) {
+        return static_cast<unsigned int>(
+          std::lower_bound(targets.begin(), targets.end(), d)
+          - targets.begin());
+      };
+      for (unsigned int a = 0; a < n_t && usable; ++a)
+        {
+          c.target_rows[a] = position.row(targets[a]);
+          c.owned          = c.owned && c.target_rows[a] >= 0;
+          for (unsigned int b = 0; b < n_t && usable; ++b)
+            {
+              const auto p = position(targets[a], targets[b]);
+              usable       = p != Lookup::missing;
+              c.pair_positions[std::size_t(a) * n_t + b] = p;
+            }
+        }
+      for (unsigned int i = 0; i < n_dofs && usable; ++i)
+        {
+          const auto d = cell_dofs[i];
+          if (!constraints.is_constrained(d))
+            {
+              c.weights[std::size_t(i) * n_t + target(d)] = 1.;
+              continue;
+            }
+          for (const auto &entry : *constraints.get_constraint_entries(d))
+            c.weights[std::size_t(i) * n_t + target(entry.first)] +=
+              entry.second;
+          const auto p = position(d, d);
+          usable       = p != Lookup::missing;
+          c.constrained.push_back(i);
+          c.diagonal_positions.push_back(p);
+        }
+      return usable;
+    }
+
     bool
     MatrixPositions::update(
       const SparseMatrix                      &matrix,
@@ -115,112 +254,17 @@ namespace pneuma
       condensed_of.assign(n_cells, -1);
       condensed_cells.clear();
       nonlocal_entries.clear();
-      std::map<std::pair<dealii::types::global_dof_index,
-                         dealii::types::global_dof_index>,
-               std::ptrdiff_t>
-        slots;
-
-      const Epetra_CrsMatrix &A       = matrix.trilinos_matrix();
-      int                    *offsets = nullptr, *indices = nullptr;
-      double                 *vals = nullptr;
-      A.ExtractCrsDataPointers(offsets, indices, vals);
-      const Epetra_BlockMap &rows = A.RowMap();
-      const Epetra_BlockMap &cols = A.ColMap();
-      using int_type              = dealii::TrilinosWrappers::types::int_type;
-      // Where (global row i, global column j) is summed: its position in
-      // the values (owned row; `missing` if the pattern lacks it), or
-      // -(s + 1) for the slot s of a row owned elsewhere (added in
-      // flush()).
-      constexpr std::ptrdiff_t missing =
-        std::numeric_limits<std::ptrdiff_t>::min();
-      const auto position = [&](const dealii::types::global_dof_index i,
-                                const dealii::types::global_dof_index j) {
-        const int r = rows.LID(static_cast<int_type>(i));
-        if (r < 0)
-          {
-            const auto it = slots.emplace(std::make_pair(i, j), slots.size());
-            if (it.second)
-              nonlocal_entries.emplace_back(i, j);
-            return -(it.first->second + 1);
-          }
-        const int c = cols.LID(static_cast<int_type>(j));
-        if (c < 0)
-          return missing;
-        const int *begin = indices + offsets[r];
-        const int *end   = indices + offsets[r + 1];
-        const int *p     = std::is_sorted(begin, end)
-                             ? std::lower_bound(begin, end, c)
-                             : std::find(begin, end, c);
-        return p == end || *p != c ? missing : std::ptrdiff_t(p - indices);
-      };
+      Lookup lookup(matrix, nonlocal_entries);
       std::vector<dealii::types::global_dof_index> targets;
       for (unsigned int k = 0; k < n_cells; ++k)
         {
-          const auto *cell_dofs = dofs + std::size_t(k) * n_dofs;
-          bool        any = false, usable = true;
-          targets.clear();
-          for (unsigned int i = 0; i < n_dofs && usable; ++i)
-            {
-              const auto d = cell_dofs[i];
-              if (!constraints.is_constrained(d))
-                {
-                  targets.push_back(d);
-                  continue;
-                }
-              any = true;
-              if (constraints.is_inhomogeneously_constrained(d))
-                usable = false;
-              else
-                for (const auto &entry : *constraints.get_constraint_entries(d))
-                  {
-                    if (constraints.is_constrained(entry.first))
-                      usable = false; // not closed
-                    targets.push_back(entry.first);
-                  }
-            }
-          if (!any || !usable)
-            continue;
-          std::sort(targets.begin(), targets.end());
-          targets.erase(std::unique(targets.begin(), targets.end()),
-                        targets.end());
-          const unsigned int n_t = targets.size();
-          Condensed          c;
-          c.target_rows.resize(n_t);
-          c.weights.assign(std::size_t(n_dofs) * n_t, 0.);
-          c.pair_positions.resize(std::size_t(n_t) * n_t);
-          const auto target = [&](const dealii::types::global_dof_index d) {
-            return static_cast<unsigned int>(
-              std::lower_bound(targets.begin(), targets.end(), d)
-              - targets.begin());
-          };
-          for (unsigned int a = 0; a < n_t && usable; ++a)
-            {
-              c.target_rows[a] = rows.LID(static_cast<int_type>(targets[a]));
-              c.owned          = c.owned && c.target_rows[a] >= 0;
-              for (unsigned int b = 0; b < n_t && usable; ++b)
-                {
-                  const auto p = position(targets[a], targets[b]);
-                  usable       = p != missing;
-                  c.pair_positions[std::size_t(a) * n_t + b] = p;
-                }
-            }
-          for (unsigned int i = 0; i < n_dofs && usable; ++i)
-            {
-              const auto d = cell_dofs[i];
-              if (!constraints.is_constrained(d))
-                {
-                  c.weights[std::size_t(i) * n_t + target(d)] = 1.;
-                  continue;
-                }
-              for (const auto &entry : *constraints.get_constraint_entries(d))
-                c.weights[std::size_t(i) * n_t + target(entry.first)] +=
-                  entry.second;
-              const auto p = position(d, d);
-              usable       = p != missing;
-              c.constrained.push_back(i);
-              c.diagonal_positions.push_back(p);
-            }
-          if (!usable)
+          Condensed c;
+          if (!condense(dofs + std::size_t(k) * n_dofs,
+                        n_dofs,
+                        constraints,
+                        lookup,
+                        targets,
+                        c))
             continue;
           condensed_of[k] = condensed_cells.size();
           condensed_cells.push_back(std::move(c));

@@ -180,6 +180,19 @@ namespace pneuma
         std::vector<unsigned int>   constrained;
         std::vector<std::ptrdiff_t> diagonal_positions;
       };
+      /// The positions of a matrix's entries (matrix_positions.cc).
+      class Lookup;
+      /// The condensation @p c of the cell with @p cell_dofs through
+      /// @p constraints; false if it has no constrained dof or cannot be
+      /// condensed at fixed positions (an inhomogeneous or open line, an
+      /// entry missing from the pattern).
+      bool
+      condense(const dealii::types::global_dof_index        *cell_dofs,
+               const unsigned int                            n_dofs,
+               const dealii::AffineConstraints<double>      &constraints,
+               Lookup                                       &lookup,
+               std::vector<dealii::types::global_dof_index> &targets,
+               Condensed                                    &c) const;
       std::vector<int>       condensed_of;
       std::vector<Condensed> condensed_cells;
       const void            *constraints_address = nullptr;
