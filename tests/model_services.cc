@@ -5,6 +5,9 @@
 //   of the liquid-and-gas tube's walls with their rigid steel end plates
 //   (Q1 and Q2), and of the V5 tank's disc, whose every free dof has a
 //   positive mass (Q2);
+// - a model set up without a matrix (Model::set_matrix_free, for
+//   strategies that assemble no tangent) holds no tangent and assembles
+//   the same residual, bit for bit, as one with a matrix;
 // - the border for a given field (BorderFromField): at the converged state
 //   of a run it reproduces the border Newton found, for the gas and liquid
 //   of the liquid-and-gas tube (gas amount control, liquid volume control)
@@ -121,6 +124,44 @@ main(int argc, char **argv)
       std::printf("Q2 disc lumped mass of every free dof: %s\n",
                   positive ? "positive" : "NOT POSITIVE (FAIL)");
     ok = positive && ok;
+  }
+  // Without a matrix: the same residual at a smooth state.
+  {
+    auto s = pneuma_test::liquid_gas_tube();
+    s.push_back({"Load stepping/Initial increment", "0.25"});
+    auto all = pneuma_test::quiet();
+    all.insert(all.end(), s.begin(), s.end());
+    std::vector<std::string> overrides;
+    for (const auto &e : all)
+      overrides.push_back(e.first + "=" + e.second);
+    const auto layout = pneuma::InputLayout::from_text("", overrides);
+    std::array<std::unique_ptr<pneuma::Simulator>, 2> sims;
+    std::array<pneuma::solvers::BorderedVector, 2>    r;
+    for (unsigned int k = 0; k < 2; ++k)
+      {
+        sims[k] = std::make_unique<pneuma::Simulator>(MPI_COMM_WORLD, layout);
+        dealii::ParameterHandler prm;
+        sims[k]->declare_parameters(prm);
+        pneuma::parse_input_text(prm, "", overrides);
+        sims[k]->parse_parameters(prm);
+        sims[k]->model().set_matrix_free(k == 1);
+        sims[k]->setup();
+        pneuma::Model                  &model = sims[k]->model();
+        pneuma::solvers::BorderedVector u     = model.initial_state();
+        for (const auto i : model.locally_owned())
+          u.field[i] += 1e-3 * std::sin(0.37 * i);
+        u.field.compress(dealii::VectorOperation::insert);
+        r[k] = u;
+        model.assemble_residual(u, 0.5, r[k]);
+      }
+    r[1].field -= r[0].field;
+    const bool same = r[1].field.linfty_norm() == 0.
+                      && sims[1]->model().tangent_matrix().m() == 0
+                      && sims[0]->model().tangent_matrix().m() > 0;
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::printf("without a matrix: no tangent, the same residual: %s\n",
+                  same ? "yes" : "NO (FAIL)");
+    ok = same && ok;
   }
   // The border for the converged field.
   {

@@ -245,7 +245,8 @@ namespace pneuma
 
     void
     CableSubsystem::add_statistics(Statistics       &statistics,
-                                   const LA::Vector &field) const
+                                   const LA::Vector &field,
+                                   const double      t) const
     {
       using S            = Statistics;
       constexpr auto all = S::all, report = S::report, summary = S::summary;
@@ -253,8 +254,7 @@ namespace pneuma
       // The reports exist on rank 0, which owns the cable dofs; the end
       // reactions are the model's support residual (with contact, the
       // contact forces on the end too).
-      auto reports =
-        cables.reports(model.time(), field, &model.support_residual());
+      auto reports = cables.reports(t, field, &model.support_residual());
       reports.resize(parameters.size());
       statistics.add_count(StatisticsGroup::run(),
                            "cable_elements",

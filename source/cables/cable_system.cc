@@ -116,7 +116,7 @@ namespace pneuma
       v.offset      = b.offset;
       v.reference   = &b.reference;
       v.radius      = std::max(b.definition.section_a, b.definition.section_b);
-      v.section_vectors = b.element.has_section_vectors();
+      v.section_components = b.element.section_vector_components();
       return v;
     }
 
@@ -929,7 +929,7 @@ namespace pneuma
           state.back().push_back(b->section_rotation);
         }
       checkpoint.put("cables/state", state);
-      checkpoint.put("cables/pvd", pvd_records);
+      checkpoint.put("cables/pvd", series);
     }
 
     void
@@ -947,8 +947,7 @@ namespace pneuma
           state[k].pop_back();
           bodies[k]->element.restore_state(state[k]);
         }
-      pvd_records = checkpoint.get<std::vector<std::pair<double, std::string>>>(
-        "cables/pvd");
+      series = checkpoint.get<VtuSeries>("cables/pvd");
     }
 
     double
@@ -1167,26 +1166,15 @@ namespace pneuma
                                        name,
                                        DataOut<1, 3>::type_cell_data);
           data_out.build_patches();
-          const std::string name = "cables_" + std::to_string(k + 1) + "_"
-                                   + Utilities::int_to_string(step, 4) + ".vtu";
+          const std::string name =
+            series.file_name(step, k, bodies.size()) + ".vtu";
           std::ofstream file(directory + "/" + name);
           data_out.write_vtu(file);
-          // A state written again (with its modes) keeps one record.
-          if (std::find_if(pvd_records.begin(),
-                           pvd_records.end(),
-                           [&](const auto &r) { return r.second == name; })
-              == pvd_records.end())
-            pvd_records.emplace_back(t, name);
+          series.add(step, t, name, k);
         }
       // cables.pvd: one dataset per cable ("part") and time.
-      std::ofstream pvd(directory + "/cables.pvd");
-      pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
-             "version=\"0.1\">\n<Collection>\n";
-      for (unsigned int r = 0; r < pvd_records.size(); ++r)
-        pvd << "  <DataSet timestep=\"" << pvd_records[r].first << "\" part=\""
-            << r % bodies.size() << "\" file=\"" << pvd_records[r].second
-            << "\"/>\n";
-      pvd << "</Collection>\n</VTKFile>\n";
+      AssertThrow(series.write_pvd(directory),
+                  ExcMessage("cannot write " + series.name() + ".pvd"));
     }
   } // namespace cables
 } // namespace pneuma

@@ -252,7 +252,8 @@ namespace pneuma
 
     void
     ChamberSubsystem::add_statistics(Statistics &statistics,
-                                     const LA::Vector &) const
+                                     const LA::Vector &,
+                                     const double) const
     {
       constexpr auto all = Statistics::all, report = Statistics::report;
       const auto    &reports = system.reports();

@@ -120,19 +120,26 @@ namespace pneuma
     ContactSubsystem::assemble(const Assembly &a)
     {
       TimerOutput::Scope t(model.timer(), "contact");
+      // The contact's own record is left as it was: what the assembly
+      // finds goes to a scratch record (the state is recorded at
+      // refresh()); a slipping point makes the tangent non-symmetric.
+      contact::ContactRecord record = contact->new_record();
       contact->assemble(
-        *a.field, *a.constraints, a.tangent, a.residual, a.probe);
+        *a.field, *a.constraints, a.tangent, a.residual, record);
+      if (a.symmetric)
+        for (const auto &r : record.reports)
+          if (r.slip_points > 0)
+            *a.symmetric = false;
     }
 
     bool
     ContactSubsystem::symmetric_tangent() const
     {
-      if (contact->smoothed())
-        return false;
-      // Coulomb slip, t = mu N t_trial/|t_trial|: the tangent of a slipping
-      // point is not symmetric (Wriggers, ch. 5), however small its
-      // asymmetric part measures.
-      return !contact->slipping();
+      // The smoothed normal's force; Coulomb slip, t = mu N t_trial /
+      // |t_trial|, is reported per assembly (Assembly::symmetric): the
+      // tangent of a slipping point is not symmetric (Wriggers, ch. 5),
+      // however small its asymmetric part measures.
+      return !contact->smoothed();
     }
 
     std::string
@@ -160,7 +167,7 @@ namespace pneuma
     void
     ContactSubsystem::refresh(const LA::Vector &field)
     {
-      contact->assemble(field, model.constraints(), nullptr, nullptr);
+      contact->record_state(field, model.constraints());
     }
 
     void
@@ -175,7 +182,8 @@ namespace pneuma
 
     void
     ContactSubsystem::add_statistics(Statistics &statistics,
-                                     const LA::Vector &) const
+                                     const LA::Vector &,
+                                     const double) const
     {
       constexpr auto all = Statistics::all, summary = Statistics::summary;
       const auto    &reports = contact->reports();

@@ -160,7 +160,7 @@ namespace pneuma
             p.lobatto ? static_cast<const Quadrature<1> &>(lobatto) : gauss;
           unsigned int index = 0;
           double       h_max = 0.;
-          d.beam             = v.section_vectors && p.radius == 0.;
+          d.beam             = !v.section_components.empty() && p.radius == 0.;
           for (const auto &cell : v.dof_handler->active_cell_iterators())
             {
               std::vector<types::global_dof_index> dofs(d.beam ? 18 : 6);
@@ -174,10 +174,13 @@ namespace pneuma
                       dofs[3 * vtx + c] = v.offset + local;
                       X[vtx][c]         = (*v.reference)[local];
                     }
+                  // The contact's layout of a beam cell: the mid-line, then
+                  // a1 and a2 of each vertex.
                   if (d.beam)
                     for (unsigned int c = 0; c < 6; ++c)
                       dofs[6 + 6 * vtx + c] =
-                        v.offset + cell->vertex_dof_index(vtx, 3 + c);
+                        v.offset
+                        + cell->vertex_dof_index(vtx, v.section_components[c]);
                 }
               for (unsigned int i = 0; i < dofs.size(); ++i)
                 values[i] = (*v.reference)[dofs[i] - v.offset];
@@ -205,18 +208,11 @@ namespace pneuma
           d.search =
             p.search_distance > 0. ? p.search_distance : d.radius + h_max;
           d.candidates.resize(index);
-          d.line_load.assign(d.points.size(), 0.);
           d.anchor.assign(d.points.size(), -1);
-          d.pending_anchor.assign(d.points.size(), -1);
           d.anchor_xi.assign(d.points.size(), Point<2>());
-          d.pending_xi.assign(d.points.size(), Point<2>());
-          d.seen_master.assign(d.points.size(), -1);
-          d.seen_xi.assign(d.points.size(), Point<2>());
-          d.seen_offset.assign(d.points.size(), Tensor<1, 3>());
           pairs.push_back(d);
         }
-      last_reports.assign(pairs.size(), ContactReport());
-      master_force.assign(masters.size(), 0.);
+      recorded = new_record();
     }
 
     IndexSet
@@ -356,365 +352,472 @@ namespace pneuma
         }
     }
 
+    /// The local terms of one point, added through the constraints, and
+    /// with a smoothed master normal chained from the variables to the
+    /// dofs: the force P^T r and its Jacobian P^T A P (r has no rows for
+    /// the nodal normals: they are not unknowns, only their columns chain
+    /// to the node positions they come from).
+    class ContactSystem::Distributor
+    {
+    public:
+      Distributor(const AffineConstraints<double> &constraints,
+                  LA::SparseMatrix                *tangent,
+                  LA::Vector                      *residual,
+                  const bool                       smoothed)
+        : constraints(constraints)
+        , tangent(tangent)
+        , residual(residual)
+        , smoothed(smoothed)
+      {
+      }
+
+      const AffineConstraints<double>                      &constraints;
+      LA::SparseMatrix                                     *tangent;
+      LA::Vector                                           *residual;
+      bool                                                  smoothed;
+      std::vector<types::global_dof_index>                  dofs;
+      std::vector<std::vector<std::pair<unsigned, double>>> rows;
+      Vector<double>                                        chained;
+      FullMatrix<double>                                    chained_matrix;
+
+      void
+      add(const Vector<double> &g, const FullMatrix<double> &A)
+      {
+        if (!smoothed)
+          {
+            LA::distribute(constraints, A, g, dofs, tangent, residual);
+            return;
+          }
+        const unsigned int n_t = dofs.size(), n_v = rows.size();
+        chained.reinit(n_t);
+        for (unsigned int v = 0; v < n_v; ++v)
+          for (const auto &[j, w] : rows[v])
+            chained(j) += w * g(v);
+        if (tangent)
+          {
+            // P^T A P with the sparse rows of P.
+            FullMatrix<double> AP(n_v, n_t);
+            for (unsigned int i = 0; i < n_v; ++i)
+              for (unsigned int v = 0; v < n_v; ++v)
+                if (const double a = A(i, v); a != 0.)
+                  for (const auto &[j, w] : rows[v])
+                    AP(i, j) += a * w;
+            chained_matrix.reinit(n_t, n_t);
+            for (unsigned int i = 0; i < n_v; ++i)
+              for (const auto &[j1, w] : rows[i])
+                for (unsigned int j2 = 0; j2 < n_t; ++j2)
+                  chained_matrix(j1, j2) += w * AP(i, j2);
+          }
+        LA::distribute(
+          constraints, chained_matrix, chained, dofs, tangent, residual);
+      }
+    };
+
+    /// The current patches (and boxes) of a pair's masters, made when
+    /// first used.
+    class ContactSystem::Patches
+    {
+    public:
+      Patches(const ContactSystem &system,
+              const ContactPair   &p,
+              const PairData      &d,
+              const LA::Vector    &u)
+        : system(system)
+        , p(p)
+        , d(d)
+        , u(u)
+        , patches(system.masters.size())
+        , made(system.masters.size(), false)
+        , boxes(system.masters.size())
+      {
+      }
+      const MasterPatch &
+      operator()(const unsigned int m)
+      {
+        if (!made[m])
+          {
+            patches[m] = system.patch(system.masters[m],
+                                      p.outside,
+                                      &u,
+                                      d.smoothed ? &d.normals : nullptr);
+            boxes[m]   = bounding_box(patches[m]);
+            made[m]    = true;
+          }
+        return patches[m];
+      }
+      /// The box of master @p m (made).
+      const std::pair<Tensor<1, 3>, Tensor<1, 3>> &
+      box(const unsigned int m) const
+      {
+        return boxes[m];
+      }
+
+    private:
+      const ContactSystem                               &system;
+      const ContactPair                                 &p;
+      const PairData                                    &d;
+      const LA::Vector                                  &u;
+      std::vector<MasterPatch>                           patches;
+      std::vector<bool>                                  made;
+      std::vector<std::pair<Tensor<1, 3>, Tensor<1, 3>>> boxes;
+    };
+
+    ContactRecord
+    ContactSystem::new_record() const
+    {
+      ContactRecord r;
+      for (const auto &d : pairs)
+        {
+          ContactRecord::Pair rp;
+          const unsigned int  n = d.points.size();
+          rp.line_load.assign(n, 0.);
+          rp.pending_anchor = d.anchor;
+          rp.pending_xi     = d.anchor_xi;
+          rp.seen_master.assign(n, -1);
+          rp.seen_xi.assign(n, Point<2>());
+          rp.seen_offset.assign(n, Tensor<1, 3>());
+          r.pairs.push_back(rp);
+        }
+      r.reports.assign(pairs.size(), ContactReport());
+      r.master_force.assign(masters.size(), 0.);
+      return r;
+    }
+
+    std::vector<SlaveSection>
+    ContactSystem::current_sections(const PairData   &d,
+                                    const LA::Vector &u) const
+    {
+      // Solid beam: the current section at the element's nodes (the
+      // contact's layout of a cell: 6 mid-line dofs, then a1, a2 of
+      // vertex 0 and of vertex 1).
+      std::vector<SlaveSection> sections(d.beam ? d.cell_dofs.size() : 0);
+      for (unsigned int c = 0; c < sections.size(); ++c)
+        for (unsigned int v = 0; v < 2; ++v)
+          for (unsigned int i = 0; i < 3; ++i)
+            {
+              const unsigned int j1 = 6 + 6 * v + i, j2 = j1 + 3;
+              sections[c].a1[v][i] =
+                d.cell_reference_values[c][j1] + u[d.cell_dofs[c][j1]];
+              sections[c].a2[v][i] =
+                d.cell_reference_values[c][j2] + u[d.cell_dofs[c][j2]];
+            }
+      return sections;
+    }
+
+    ContactSystem::Nearest
+    ContactSystem::nearest(const PairData &d,
+                           const Slave    &slave,
+                           Patches        &patches) const
+    {
+      // Nearest projection inside a candidate cell, per point, here; then
+      // the nearest over all ranks wins (lowest rank on a tie).
+      const unsigned int n_points = d.points.size();
+      const int          rank     = Utilities::MPI::this_mpi_process(comm);
+      Nearest            near;
+      near.local.assign(n_points, {std::numeric_limits<double>::max(), rank});
+      near.master.assign(n_points, 0);
+      near.projection.resize(n_points);
+      for (unsigned int q = 0; q < n_points; ++q)
+        {
+          const CablePoint  &pt = d.points[q];
+          const Tensor<1, 3> x  = (1. - pt.eta) * slave[pt.cable_cell][0]
+                                 + pt.eta * slave[pt.cable_cell][1];
+          for (const unsigned int m : d.candidates[pt.cable_cell])
+            {
+              const MasterPatch &patch_m = patches(m);
+              // A point farther than R from the cell's box (plus the bulge
+              // of a curved cell, bounded by its box size) cannot touch it.
+              const auto &box      = patches.box(m);
+              bool        near_box = true;
+              for (unsigned int i = 0; i < 3 && near_box; ++i)
+                {
+                  const double margin =
+                    d.radius + 0.25 * (box.second[i] - box.first[i]);
+                  near_box = x[i] >= box.first[i] - margin
+                             && x[i] <= box.second[i] + margin;
+                }
+              if (!near_box)
+                continue;
+              const Projection proj = project(patch_m, x, d.radius);
+              if (proj.inside && proj.distance < near.local[q].distance)
+                {
+                  near.local[q].distance = proj.distance;
+                  near.master[q]         = m;
+                  near.projection[q]     = proj;
+                }
+            }
+        }
+      near.global = near.local;
+      MPI_Allreduce(near.local.data(),
+                    near.global.data(),
+                    n_points,
+                    MPI_DOUBLE_INT,
+                    MPI_MINLOC,
+                    comm);
+      for (unsigned int q = 0; q < n_points; ++q)
+        near.held.push_back(near.global[q].rank == rank
+                            && near.local[q].distance
+                                 != std::numeric_limits<double>::max());
+      return near;
+    }
+
     void
     ContactSystem::assemble(const LA::Vector                &u,
                             const AffineConstraints<double> &constraints,
                             LA::SparseMatrix                *tangent,
                             LA::Vector                      *residual,
-                            const bool                       probe)
+                            ContactRecord                   &record) const
     {
-      // A probe leaves the recorded point data as it was.
-      struct Record
-      {
-        std::vector<double>       line_load;
-        std::vector<int>          pending_anchor, seen_master;
-        std::vector<Point<2>>     pending_xi, seen_xi;
-        std::vector<Tensor<1, 3>> seen_offset;
-      };
-      std::vector<Record>        saved;
-      std::vector<ContactReport> saved_reports;
-      std::vector<double>        saved_master_force;
-      if (probe)
-        {
-          for (const auto &d : pairs)
-            saved.push_back({d.line_load,
-                             d.pending_anchor,
-                             d.seen_master,
-                             d.pending_xi,
-                             d.seen_xi,
-                             d.seen_offset});
-          saved_reports      = last_reports;
-          saved_master_force = master_force;
-        }
-      std::fill(master_force.begin(), master_force.end(), 0.);
-      const int rank = Utilities::MPI::this_mpi_process(comm);
+      if (record.pairs.size() != pairs.size())
+        record = new_record();
+      std::fill(record.master_force.begin(), record.master_force.end(), 0.);
       for (unsigned int k = 0; k < pairs.size(); ++k)
-        {
-          PairData          &d        = pairs[k];
-          const ContactPair &p        = parameters.all()[k];
-          const unsigned int n_points = d.points.size();
-          d.normals.clear_cache();
-          // Nearest projection inside a candidate cell, per point, here.
-          struct Best
-          {
-            double distance;
-            int    rank;
-          };
-          std::vector<Best>         best(n_points,
-                                 {std::numeric_limits<double>::max(), rank});
-          std::vector<unsigned int> best_master(n_points, 0);
-          std::vector<Projection>   best_projection(n_points);
-          const auto                slave = current_slave(d, u);
-          // Solid beam: the current section at the element's nodes.
-          std::vector<SlaveSection> sections(d.beam ? d.cell_dofs.size() : 0);
-          for (unsigned int c = 0; c < sections.size(); ++c)
-            for (unsigned int v = 0; v < 2; ++v)
-              for (unsigned int i = 0; i < 3; ++i)
-                {
-                  const unsigned int j1 = 6 + 6 * v + i, j2 = j1 + 3;
-                  sections[c].a1[v][i] =
-                    d.cell_reference_values[c][j1] + u[d.cell_dofs[c][j1]];
-                  sections[c].a2[v][i] =
-                    d.cell_reference_values[c][j2] + u[d.cell_dofs[c][j2]];
-                }
-          // Current patches (and boxes) of the masters, made when first used.
-          std::vector<MasterPatch> patches(masters.size());
-          std::vector<bool>        have_patch(masters.size(), false);
-          std::vector<std::pair<Tensor<1, 3>, Tensor<1, 3>>> boxes(
-            masters.size());
-          const auto current =
-            [&](const unsigned int m) -> const MasterPatch & {
-            if (!have_patch[m])
-              {
-                patches[m]    = patch(masters[m],
-                                   p.outside,
-                                   &u,
-                                   d.smoothed ? &d.normals : nullptr);
-                boxes[m]      = bounding_box(patches[m]);
-                have_patch[m] = true;
-              }
-            return patches[m];
-          };
-          for (unsigned int q = 0; q < n_points; ++q)
-            {
-              const CablePoint  &pt = d.points[q];
-              const Tensor<1, 3> x  = (1. - pt.eta) * slave[pt.cable_cell][0]
-                                     + pt.eta * slave[pt.cable_cell][1];
-              for (const unsigned int m : d.candidates[pt.cable_cell])
-                {
-                  const MasterPatch &patch_m = current(m);
-                  // A point farther than R from the cell's box (plus the
-                  // bulge of a curved cell, bounded by its box size) cannot
-                  // touch it.
-                  bool near = true;
-                  for (unsigned int i = 0; i < 3 && near; ++i)
-                    {
-                      const double margin =
-                        d.radius
-                        + 0.25 * (boxes[m].second[i] - boxes[m].first[i]);
-                      near = x[i] >= boxes[m].first[i] - margin
-                             && x[i] <= boxes[m].second[i] + margin;
-                    }
-                  if (!near)
-                    continue;
-                  const Projection proj = project(patch_m, x, d.radius);
-                  if (proj.inside && proj.distance < best[q].distance)
-                    {
-                      best[q].distance   = proj.distance;
-                      best_master[q]     = m;
-                      best_projection[q] = proj;
-                    }
-                }
-            }
-          // The nearest over all ranks wins (lowest rank on a tie).
-          std::vector<Best> global(best);
-          MPI_Allreduce(best.data(),
-                        global.data(),
-                        n_points,
-                        MPI_DOUBLE_INT,
-                        MPI_MINLOC,
-                        comm);
-
-          ContactReport report;
-          report.points = n_points;
-          std::fill(d.line_load.begin(), d.line_load.end(), 0.);
-          std::fill(d.pending_anchor.begin(), d.pending_anchor.end(), -1);
-          std::fill(d.seen_master.begin(), d.seen_master.end(), -1);
-          Vector<double>                       f_residual;
-          FullMatrix<double>                   f_jacobian;
-          std::vector<types::global_dof_index> dofs;
-          // Smoothed normals: the chain from the variables to the dofs
-          // (P, rows per variable) and the chained local terms: the
-          // force P^T r and its Jacobian P^T A P (r has no rows for the
-          // nodal normals: they are not unknowns, only their columns
-          // chain to the node positions they come from).
-          std::vector<std::vector<std::pair<unsigned, double>>> rows;
-          Vector<double>                                        chained;
-          FullMatrix<double>                                    chained_matrix;
-          const auto distribute_chained = [&](const Vector<double>     &g,
-                                              const FullMatrix<double> &A) {
-            if (!d.smoothed)
-              {
-                LA::distribute(constraints, A, g, dofs, tangent, residual);
-                return;
-              }
-            const unsigned int n_t = dofs.size(), n_v = rows.size();
-            chained.reinit(n_t);
-            for (unsigned int v = 0; v < n_v; ++v)
-              for (const auto &[j, w] : rows[v])
-                chained(j) += w * g(v);
-            if (tangent)
-              {
-                // P^T A P with the sparse rows of P.
-                FullMatrix<double> AP(n_v, n_t);
-                for (unsigned int i = 0; i < n_v; ++i)
-                  for (unsigned int v = 0; v < n_v; ++v)
-                    if (const double a = A(i, v); a != 0.)
-                      for (const auto &[j, w] : rows[v])
-                        AP(i, j) += a * w;
-                chained_matrix.reinit(n_t, n_t);
-                for (unsigned int i = 0; i < n_v; ++i)
-                  for (const auto &[j1, w] : rows[i])
-                    for (unsigned int j2 = 0; j2 < n_t; ++j2)
-                      chained_matrix(j1, j2) += w * AP(i, j2);
-              }
-            LA::distribute(
-              constraints, chained_matrix, chained, dofs, tangent, residual);
-          };
-          // Whether point q is assembled here (its nearest projection is
-          // on this rank), and its gap there.
-          const auto held = [&](const unsigned int q) {
-            return global[q].rank == rank
-                   && best[q].distance != std::numeric_limits<double>::max();
-          };
-          std::vector<double>       gaps(n_points, 0.);
-          std::vector<unsigned int> penetrating;
-          for (unsigned int q = 0; q < n_points; ++q)
-            {
-              if (!held(q))
-                continue;
-              const CablePoint &pt   = d.points[q];
-              const Projection &proj = best_projection[q];
-              gaps[q]                = proj.gap;
-              if (d.beam)
-                {
-                  // The section's extent along n instead of R.
-                  const SlaveSection &sc = sections[pt.cable_cell];
-                  const Tensor<1, 3>  a1 =
-                    (1. - pt.eta) * sc.a1[0] + pt.eta * sc.a1[1];
-                  const Tensor<1, 3> a2 =
-                    (1. - pt.eta) * sc.a2[0] + pt.eta * sc.a2[1];
-                  gaps[q] +=
-                    d.radius - std::hypot(a1 * proj.normal, a2 * proj.normal);
-                }
-              if (!(gaps[q] >= 0.))
-                penetrating.push_back(q);
-            }
-          // The penalty terms of the penetrating points, on the task
-          // threads: each point's automatic differentiation is independent
-          // of the others' (the patches in use were all made by the search
-          // above). They are added to the system in point order below, so
-          // the sums do not depend on the thread count.
-          std::vector<Vector<double>>     gradients(n_points);
-          std::vector<FullMatrix<double>> hessians(n_points);
-          parallel::apply_to_subranges(
-            0u,
-            static_cast<unsigned int>(penetrating.size()),
-            [&](const unsigned int begin, const unsigned int end) {
-              for (unsigned int i = begin; i < end; ++i)
-                {
-                  const unsigned int q  = penetrating[i];
-                  const CablePoint  &pt = d.points[q];
-                  penalty_terms(patches[best_master[q]],
-                                slave[pt.cable_cell],
-                                pt.eta,
-                                d.radius,
-                                p.penalty,
-                                pt.weight,
-                                best_projection[q].xi,
-                                &gradients[q],
-                                tangent ? &hessians[q] : nullptr,
-                                d.beam ? &sections[pt.cable_cell] : nullptr);
-                }
-            },
-            8);
-          for (unsigned int q = 0; q < n_points; ++q)
-            {
-              if (!held(q))
-                continue;
-              const double       gap  = gaps[q];
-              const CablePoint  &pt   = d.points[q];
-              const unsigned int m    = best_master[q];
-              const Projection  &proj = best_projection[q];
-              if (gap < d.search)
-                {
-                  // Near: the reference of the next step's check.
-                  d.seen_master[q] = m;
-                  d.seen_xi[q]     = proj.xi;
-                  d.seen_offset[q] = (1. - pt.eta) * slave[pt.cable_cell][0]
-                                     + pt.eta * slave[pt.cable_cell][1]
-                                     - position(patches[m], proj.xi);
-                }
-              if (gap >= 0.)
-                continue;
-              const Vector<double>     &gradient = gradients[q];
-              const FullMatrix<double> &hessian  = hessians[q];
-              variable_map(d,
-                           pt.cable_cell,
-                           masters[m],
-                           &u,
-                           dofs,
-                           d.smoothed ? &rows : nullptr);
-              distribute_chained(gradient, hessian);
-              const double N = -p.penalty * gap; // >= 0
-              d.line_load[q] = N;
-              ++report.active_points;
-              report.total_force += N * pt.weight;
-              // The force on the cable, -(r_0 + r_1) = N w n.
-              for (unsigned int i = 0; i < 3; ++i)
-                report.force[i] -= gradient(i) + gradient(3 + i);
-              report.max_penetration = std::max(report.max_penetration, -gap);
-              master_force[m] += N * pt.weight;
-
-              if (p.friction > 0.)
-                {
-                  const std::array<Tensor<1, 3>, 2> &sl = slave[pt.cable_cell];
-                  if (d.anchor[q] < 0)
-                    {
-                      // First contact: stick where it touches.
-                      d.pending_anchor[q] = m;
-                      d.pending_xi[q]     = proj.xi;
-                      continue;
-                    }
-                  // The anchor, expressed on the current cell m.
-                  Point<2> xi_a = d.anchor_xi[q];
-                  if (static_cast<unsigned int>(d.anchor[q]) != m)
-                    {
-                      const Tensor<1, 3> ya =
-                        position(current(d.anchor[q]), xi_a);
-                      xi_a = project(patches[m], ya, 0., proj.xi).xi;
-                    }
-                  const FrictionState fs =
-                    friction_terms(patches[m],
-                                   xi_a,
-                                   sl,
-                                   pt.eta,
-                                   d.radius,
-                                   p.penalty,
-                                   p.tangential_penalty,
-                                   p.friction,
-                                   pt.weight,
-                                   proj.xi,
-                                   &f_residual,
-                                   tangent ? &f_jacobian : nullptr,
-                                   d.beam ? &sections[pt.cable_cell] : nullptr);
-                  distribute_chained(f_residual, f_jacobian);
-                  report.friction_force += fs.traction.norm() * pt.weight;
-                  // The resultant on the cable takes the friction too.
-                  for (unsigned int i = 0; i < 3; ++i)
-                    report.force[i] += fs.traction[i] * pt.weight;
-                  if (fs.slip)
-                    {
-                      ++report.slip_points;
-                      // Where the slip drags the anchor: its projection on
-                      // this cable element's candidates.
-                      double best_d = std::numeric_limits<double>::max();
-                      for (const unsigned int c : d.candidates[pt.cable_cell])
-                        {
-                          const Projection a =
-                            project(current(c), fs.anchor_target, 0.);
-                          if (a.inside && a.distance < best_d)
-                            {
-                              best_d              = a.distance;
-                              d.pending_anchor[q] = c;
-                              d.pending_xi[q]     = a.xi;
-                            }
-                        }
-                      if (d.pending_anchor[q] < 0)
-                        {
-                          d.pending_anchor[q] = m;
-                          d.pending_xi[q]     = xi_a;
-                        }
-                    }
-                  else
-                    {
-                      d.pending_anchor[q] = m;
-                      d.pending_xi[q]     = xi_a;
-                    }
-                }
-            }
-          // Every rank reports the same numbers.
-          report.active_points =
-            Utilities::MPI::sum(report.active_points, comm);
-          report.total_force = Utilities::MPI::sum(report.total_force, comm);
-          for (unsigned int i = 0; i < 3; ++i)
-            report.force[i] = Utilities::MPI::sum(report.force[i], comm);
-          report.max_penetration =
-            Utilities::MPI::max(report.max_penetration, comm);
-          report.slip_points = Utilities::MPI::sum(report.slip_points, comm);
-          report.friction_force =
-            Utilities::MPI::sum(report.friction_force, comm);
-          Utilities::MPI::sum(d.line_load, comm, d.line_load);
-          last_reports[k] = report;
-        }
+        assemble_pair(k, u, constraints, tangent, residual, record);
       if (residual)
         residual->compress(VectorOperation::add);
       if (tangent)
         tangent->compress(VectorOperation::add);
-      if (probe)
+    }
+
+    void
+    ContactSystem::assemble_pair(const unsigned int               k,
+                                 const LA::Vector                &u,
+                                 const AffineConstraints<double> &constraints,
+                                 LA::SparseMatrix                *tangent,
+                                 LA::Vector                      *residual,
+                                 ContactRecord                   &record) const
+    {
+      const PairData    &d        = pairs[k];
+      const ContactPair &p        = parameters.all()[k];
+      const unsigned int n_points = d.points.size();
+      d.normals.clear_cache();
+      const Slave          slave    = current_slave(d, u);
+      const auto           sections = current_sections(d, u);
+      Patches              patches(*this, p, d, u);
+      const Nearest        near = nearest(d, slave, patches);
+      ContactReport        report;
+      ContactRecord::Pair &rec = record.pairs[k];
+      report.points            = n_points;
+      std::fill(rec.line_load.begin(), rec.line_load.end(), 0.);
+      std::fill(rec.pending_anchor.begin(), rec.pending_anchor.end(), -1);
+      std::fill(rec.seen_master.begin(), rec.seen_master.end(), -1);
+      // The gaps of the points assembled here, and those that penetrate.
+      std::vector<double>       gaps(n_points, 0.);
+      std::vector<unsigned int> penetrating;
+      for (unsigned int q = 0; q < n_points; ++q)
         {
-          for (unsigned int k = 0; k < pairs.size(); ++k)
+          if (!near.held[q])
+            continue;
+          const CablePoint &pt   = d.points[q];
+          const Projection &proj = near.projection[q];
+          gaps[q]                = proj.gap;
+          if (d.beam)
             {
-              pairs[k].line_load      = std::move(saved[k].line_load);
-              pairs[k].pending_anchor = std::move(saved[k].pending_anchor);
-              pairs[k].pending_xi     = std::move(saved[k].pending_xi);
-              pairs[k].seen_master    = std::move(saved[k].seen_master);
-              pairs[k].seen_xi        = std::move(saved[k].seen_xi);
-              pairs[k].seen_offset    = std::move(saved[k].seen_offset);
+              // The section's extent along n instead of R.
+              const SlaveSection &sc = sections[pt.cable_cell];
+              const Tensor<1, 3>  a1 =
+                (1. - pt.eta) * sc.a1[0] + pt.eta * sc.a1[1];
+              const Tensor<1, 3> a2 =
+                (1. - pt.eta) * sc.a2[0] + pt.eta * sc.a2[1];
+              gaps[q] +=
+                d.radius - std::hypot(a1 * proj.normal, a2 * proj.normal);
             }
-          last_reports = std::move(saved_reports);
-          master_force = std::move(saved_master_force);
+          if (!(gaps[q] >= 0.))
+            penetrating.push_back(q);
         }
+      // The penalty terms of the penetrating points, on the task threads:
+      // each point's automatic differentiation is independent of the
+      // others' (the patches in use were all made by the search above).
+      // They are added to the system in point order below, so the sums do
+      // not depend on the thread count.
+      std::vector<Vector<double>>     gradients(n_points);
+      std::vector<FullMatrix<double>> hessians(n_points);
+      parallel::apply_to_subranges(
+        0u,
+        static_cast<unsigned int>(penetrating.size()),
+        [&](const unsigned int begin, const unsigned int end) {
+          for (unsigned int i = begin; i < end; ++i)
+            {
+              const unsigned int q  = penetrating[i];
+              const CablePoint  &pt = d.points[q];
+              penalty_terms(patches(near.master[q]),
+                            slave[pt.cable_cell],
+                            pt.eta,
+                            d.radius,
+                            p.penalty,
+                            pt.weight,
+                            near.projection[q].xi,
+                            &gradients[q],
+                            tangent ? &hessians[q] : nullptr,
+                            d.beam ? &sections[pt.cable_cell] : nullptr);
+            }
+        },
+        8);
+      Distributor distributor(constraints, tangent, residual, d.smoothed);
+      for (unsigned int q = 0; q < n_points; ++q)
+        if (near.held[q])
+          add_point(k,
+                    q,
+                    gaps[q],
+                    near,
+                    slave,
+                    sections,
+                    patches,
+                    gradients[q],
+                    hessians[q],
+                    u,
+                    distributor,
+                    report,
+                    record);
+      // Every rank reports the same numbers.
+      report.active_points = Utilities::MPI::sum(report.active_points, comm);
+      report.total_force   = Utilities::MPI::sum(report.total_force, comm);
+      for (unsigned int i = 0; i < 3; ++i)
+        report.force[i] = Utilities::MPI::sum(report.force[i], comm);
+      report.max_penetration =
+        Utilities::MPI::max(report.max_penetration, comm);
+      report.slip_points    = Utilities::MPI::sum(report.slip_points, comm);
+      report.friction_force = Utilities::MPI::sum(report.friction_force, comm);
+      Utilities::MPI::sum(rec.line_load, comm, rec.line_load);
+      record.reports[k] = report;
+    }
+
+    void
+    ContactSystem::add_point(const unsigned int               k,
+                             const unsigned int               q,
+                             const double                     gap,
+                             const Nearest                   &near,
+                             const Slave                     &slave,
+                             const std::vector<SlaveSection> &sections,
+                             Patches                         &patches,
+                             const Vector<double>            &gradient,
+                             const FullMatrix<double>        &hessian,
+                             const LA::Vector                &u,
+                             Distributor                     &distributor,
+                             ContactReport                   &report,
+                             ContactRecord                   &record) const
+    {
+      const PairData      &d    = pairs[k];
+      const ContactPair   &p    = parameters.all()[k];
+      ContactRecord::Pair &rec  = record.pairs[k];
+      const CablePoint    &pt   = d.points[q];
+      const unsigned int   m    = near.master[q];
+      const Projection    &proj = near.projection[q];
+      if (gap < d.search)
+        {
+          // Near: the reference of the next step's check.
+          rec.seen_master[q] = m;
+          rec.seen_xi[q]     = proj.xi;
+          rec.seen_offset[q] = (1. - pt.eta) * slave[pt.cable_cell][0]
+                               + pt.eta * slave[pt.cable_cell][1]
+                               - position(patches(m), proj.xi);
+        }
+      if (gap >= 0.)
+        return;
+      variable_map(d,
+                   pt.cable_cell,
+                   masters[m],
+                   &u,
+                   distributor.dofs,
+                   d.smoothed ? &distributor.rows : nullptr);
+      distributor.add(gradient, hessian);
+      const double N   = -p.penalty * gap; // >= 0
+      rec.line_load[q] = N;
+      ++report.active_points;
+      report.total_force += N * pt.weight;
+      // The force on the cable, -(r_0 + r_1) = N w n.
+      for (unsigned int i = 0; i < 3; ++i)
+        report.force[i] -= gradient(i) + gradient(3 + i);
+      report.max_penetration = std::max(report.max_penetration, -gap);
+      record.master_force[m] += N * pt.weight;
+      if (p.friction > 0.)
+        add_friction(
+          k, q, near, slave, sections, patches, distributor, report, record);
+    }
+
+    void
+    ContactSystem::add_friction(const unsigned int               k,
+                                const unsigned int               q,
+                                const Nearest                   &near,
+                                const Slave                     &slave,
+                                const std::vector<SlaveSection> &sections,
+                                Patches                         &patches,
+                                Distributor                     &distributor,
+                                ContactReport                   &report,
+                                ContactRecord                   &record) const
+    {
+      const PairData      &d    = pairs[k];
+      const ContactPair   &p    = parameters.all()[k];
+      ContactRecord::Pair &rec  = record.pairs[k];
+      const CablePoint    &pt   = d.points[q];
+      const unsigned int   m    = near.master[q];
+      const Projection    &proj = near.projection[q];
+      if (d.anchor[q] < 0)
+        {
+          // First contact: stick where it touches.
+          rec.pending_anchor[q] = m;
+          rec.pending_xi[q]     = proj.xi;
+          return;
+        }
+      // The anchor, expressed on the current cell m.
+      Point<2> xi_a = d.anchor_xi[q];
+      if (static_cast<unsigned int>(d.anchor[q]) != m)
+        {
+          const Tensor<1, 3> ya = position(patches(d.anchor[q]), xi_a);
+          xi_a                  = project(patches(m), ya, 0., proj.xi).xi;
+        }
+      Vector<double>      f_residual;
+      FullMatrix<double>  f_jacobian;
+      const FrictionState fs =
+        friction_terms(patches(m),
+                       xi_a,
+                       slave[pt.cable_cell],
+                       pt.eta,
+                       d.radius,
+                       p.penalty,
+                       p.tangential_penalty,
+                       p.friction,
+                       pt.weight,
+                       proj.xi,
+                       &f_residual,
+                       distributor.tangent ? &f_jacobian : nullptr,
+                       d.beam ? &sections[pt.cable_cell] : nullptr);
+      distributor.add(f_residual, f_jacobian);
+      report.friction_force += fs.traction.norm() * pt.weight;
+      // The resultant on the cable takes the friction too.
+      for (unsigned int i = 0; i < 3; ++i)
+        report.force[i] += fs.traction[i] * pt.weight;
+      rec.pending_anchor[q] = m;
+      rec.pending_xi[q]     = xi_a;
+      if (!fs.slip)
+        return;
+      ++report.slip_points;
+      // Where the slip drags the anchor: its projection on this cable
+      // element's candidates.
+      rec.pending_anchor[q] = -1;
+      double best_d         = std::numeric_limits<double>::max();
+      for (const unsigned int c : d.candidates[pt.cable_cell])
+        {
+          const Projection a = project(patches(c), fs.anchor_target, 0.);
+          if (a.inside && a.distance < best_d)
+            {
+              best_d                = a.distance;
+              rec.pending_anchor[q] = c;
+              rec.pending_xi[q]     = a.xi;
+            }
+        }
+      if (rec.pending_anchor[q] < 0)
+        {
+          rec.pending_anchor[q] = m;
+          rec.pending_xi[q]     = xi_a;
+        }
+    }
+
+    void
+    ContactSystem::record_state(const LA::Vector                &u,
+                                const AffineConstraints<double> &constraints)
+    {
+      assemble(u, constraints, nullptr, nullptr, recorded);
     }
 
     bool
@@ -739,26 +842,19 @@ namespace pneuma
       return false;
     }
 
-    bool
-    ContactSystem::slipping() const
-    {
-      for (const auto &r : last_reports)
-        if (r.slip_points > 0)
-          return true;
-      return false;
-    }
-
     void
     ContactSystem::commit_step()
     {
-      committed_reports = last_reports;
-      for (auto &d : pairs)
+      committed_reports = recorded.reports;
+      for (unsigned int k = 0; k < pairs.size(); ++k)
         {
-          d.anchor       = d.pending_anchor;
-          d.anchor_xi    = d.pending_xi;
-          d.start_master = d.seen_master;
-          d.start_xi     = d.seen_xi;
-          d.start_offset = d.seen_offset;
+          PairData                  &d   = pairs[k];
+          const ContactRecord::Pair &rec = recorded.pairs[k];
+          d.anchor                       = rec.pending_anchor;
+          d.anchor_xi                    = rec.pending_xi;
+          d.start_master                 = rec.seen_master;
+          d.start_xi                     = rec.seen_xi;
+          d.start_offset                 = rec.seen_offset;
         }
     }
 
@@ -902,9 +998,9 @@ namespace pneuma
                 d.anchor_xi[q] =
                   Point<2>(saved[k][q].second[0], saved[k][q].second[1]);
             }
-          d.pending_anchor = d.anchor;
-          d.pending_xi     = d.anchor_xi;
         }
+      // What a commit keeps until the state is recorded again.
+      recorded = new_record();
     }
 
     Vector<double>
@@ -922,7 +1018,7 @@ namespace pneuma
             for (unsigned int q = 0; q < d.points.size(); ++q)
               {
                 sum[d.points[q].cable_cell] +=
-                  d.line_load[q] * d.points[q].weight;
+                  recorded.pairs[k].line_load[q] * d.points[q].weight;
                 weight[d.points[q].cable_cell] += d.points[q].weight;
               }
             for (unsigned int c = 0; c < load.size(); ++c)
@@ -937,7 +1033,7 @@ namespace pneuma
       Vector<float> pressure(n_active_cells);
       for (unsigned int m = 0; m < masters.size(); ++m)
         pressure[masters[m].cell->active_cell_index()] =
-          master_force[m] / masters[m].area;
+          recorded.master_force[m] / masters[m].area;
       return pressure;
     }
   } // namespace contact

@@ -229,6 +229,13 @@ namespace pneuma
   void
   Model::rebuild_matrices()
   {
+    // Strategies without a tangent need no pattern and no matrix.
+    if (matrix_free)
+      {
+        tangent.clear();
+        laplacian.clear();
+        return;
+      }
     DynamicSparsityPattern dsp(relevant);
     for (const auto &s : subsystems)
       s->add_sparsity(dsp, update_constraints);
@@ -512,7 +519,8 @@ namespace pneuma
 
   void
   Model::add_statistics(Statistics                    &statistics,
-                        const solvers::BorderedVector &state)
+                        const solvers::BorderedVector &state,
+                        const double                   t)
   {
     ghost(state.field);
     // The one residual assembly of a report: every subsystem's residual
@@ -527,20 +535,19 @@ namespace pneuma
       unconstrained_forces = make_field();
       Vector<double> border_residual(n_border());
       Assembly       a;
-      a.time            = current_time;
+      a.time            = t;
       a.field           = &ghosted;
       a.border          = &state.border;
       a.constraints     = &none;
       a.residual        = &unconstrained_forces;
       a.border_residual = &border_residual;
       a.coupling        = &scratch_coupling;
-      a.probe           = true;
       for (const auto &s : subsystems)
         s->assemble(a);
     }
     condense_kinematic(unconstrained_forces, support_forces);
     for (const auto &s : subsystems)
-      s->add_statistics(statistics, ghosted);
+      s->add_statistics(statistics, ghosted, t);
   }
 
   void
@@ -695,7 +702,6 @@ namespace pneuma
     tangent  = 0.;
     external = 0.;
     assemble_into(u, current_time, residual, &tangent, &external, coupling);
-    // A subsystem's symmetry can change with its state (friction slip).
     solver.set_symmetric_possible(symmetric_by_construction());
     assembled_state    = u;
     assembled_time     = current_time;
@@ -705,6 +711,8 @@ namespace pneuma
   bool
   Model::symmetric_by_construction() const
   {
+    if (!assembled_symmetric)
+      return false;
     for (const auto &s : subsystems)
       if (const auto *h = dynamic_cast<const LinearSolverHints *>(s.get());
           h && !h->symmetric_tangent())
@@ -713,9 +721,9 @@ namespace pneuma
   }
 
   bool
-  Model::tangent_is_at(const solvers::BorderedVector &u) const
+  Model::tangent_is_at(const solvers::BorderedVector &u, const double t) const
   {
-    if (!tangent_is_current || assembled_time != current_time
+    if (!tangent_is_current || assembled_time != t
         || assembled_state.border.size() != u.border.size()
         || assembled_state.field.size() != u.field.size())
       return false;
@@ -762,8 +770,13 @@ namespace pneuma
     a.external        = f_ext;
     a.border_residual = &residual.border;
     a.coupling        = &border;
+    // A subsystem's symmetry can change with its state (friction slip).
+    bool symmetric = true;
+    a.symmetric    = K ? &symmetric : nullptr;
     for (const auto &s : subsystems)
       s->assemble(a);
+    if (K)
+      assembled_symmetric = symmetric;
   }
 
   void

@@ -138,9 +138,11 @@ namespace pneuma
         std::error_code ec;
         for (const auto &entry : fs::directory_iterator(output_directory, ec))
           {
+            // Every VTU series (core/vtu_series.h): <name>[_<part>]_NNNN
+            // files and <name>.pvd.
             static const std::regex files(
-              "solution_[0-9]{4}(\\.[0-9]+)?\\.(vtu|pvtu)|"
-              "cables_[0-9]+_[0-9]{4}\\.vtu|solution\\.pvd|cables\\.pvd|"
+              "[A-Za-z0-9]+(_[0-9]+)?_[0-9]{4}(\\.[0-9]+)?\\.(vtu|pvtu)|"
+              "[A-Za-z0-9]+\\.pvd|"
               "history\\.csv|summary\\.json|refinement\\.csv");
             static const std::regex cycles(
               "cycle-[0-9]+|checkpoint(\\.new|\\.old)?");
@@ -235,14 +237,14 @@ namespace pneuma
         namespace fs = std::filesystem;
         std::error_code         ec;
         static const std::regex files(
-          "(solution|cables_[0-9]+)_([0-9]{4})(\\.[0-9]+)?\\.(vtu|pvtu)");
+          "[A-Za-z0-9]+(?:_[0-9]+)?_([0-9]{4})(?:\\.[0-9]+)?\\.(?:vtu|pvtu)");
         for (const auto &entry : fs::directory_iterator(output_directory, ec))
           {
             std::smatch       match;
             const std::string name = entry.path().filename().string();
             if (entry.is_regular_file(ec)
                 && std::regex_match(name, match, files)
-                && std::stoul(match[2].str()) > step)
+                && std::stoul(match[1].str()) > step)
               fs::remove(entry.path(), ec);
           }
         fs::remove(output_directory + "/summary.json", ec);

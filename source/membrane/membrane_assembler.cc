@@ -152,6 +152,402 @@ namespace pneuma
       };
     } // namespace
 
+    namespace
+    {
+      /// What every cell of one assembly shares.
+      struct CellContext
+      {
+        const ReferenceGeometry &ref;
+        const loads::Loads      &loads;
+        unsigned int             n_node, n_dofs, n_q;
+        /// dof_of[a][c]: the cell dof of node a, component c.
+        std::vector<std::array<unsigned int, 3>> dof_of;
+        /// Form finding: the form-finding laws, and no load.
+        bool         loaded;
+        bool         want_matrix, want_vector, want_stress;
+        double       t;
+        Tensor<1, 3> g;
+        /// A pressure that does not depend on the position is evaluated
+        /// once.
+        bool   uniform_pressure;
+        double pressure_value;
+      };
+
+      /// The shared data of an assembly at time @p t (loaded: the loads
+      /// act; false in form finding).
+      CellContext
+      make_context(const ReferenceGeometry &ref,
+                   const loads::Loads      &loads,
+                   const bool               loaded,
+                   const AssemblyRequest   &request,
+                   const unsigned int       n_q,
+                   const unsigned int       n_dofs)
+      {
+        const double t           = request.time;
+        const bool   want_matrix = request.tangent != nullptr;
+        const bool   uniform     = loaded && loads.pressure_is_uniform();
+        CellContext  ctx{ref,
+                        loads,
+                        ref.n_nodes(),
+                        n_dofs,
+                        n_q,
+                        std::vector<std::array<unsigned int, 3>>(ref.n_nodes()),
+                        loaded,
+                        want_matrix,
+                        request.residual != nullptr
+                          || request.external != nullptr,
+                        // The applied loads alone (the reactions' statistics)
+                        // need no stresses.
+                        want_matrix || request.residual != nullptr,
+                        t,
+                        loaded && loads.has_gravity() ? loads.gravity(t)
+                                                       : Tensor<1, 3>(),
+                        uniform,
+                        uniform ? loads.pressure(Point<3>(), t) : 0.};
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          ctx.dof_of[ref.node(i)][ref.component(i)] = i;
+        return ctx;
+      }
+
+      /// A cell's dofs and nodal displacements into @p copy and @p scratch;
+      /// its matrix and vectors cleared.
+      void
+      gather_cell_values(const CellContext &ctx,
+                         const LA::Vector  &u,
+                         const unsigned int cell_index,
+                         CellScratch       &scratch,
+                         CellCopy          &copy)
+      {
+        const types::global_dof_index *cell_dofs =
+          ctx.ref.dof_indices(cell_index);
+        copy.cell_index = cell_index;
+        std::copy(cell_dofs, cell_dofs + ctx.n_dofs, copy.dof_indices.begin());
+        for (unsigned int i = 0; i < ctx.n_dofs; ++i)
+          {
+            copy.local_u[i] = u[copy.dof_indices[i]];
+            scratch.u_node[ctx.ref.node(i)][ctx.ref.component(i)] =
+              copy.local_u[i];
+          }
+        copy.matrix   = 0;
+        copy.residual = 0;
+        copy.external = 0;
+      }
+
+      /// The state of one quadrature point of a cell.
+      struct PointState
+      {
+        /// a_alpha = E_alpha + sum_a u_a dN_a/dS_alpha.
+        Tensor<1, 3>          a0, a1;
+        SymmetricTensor<2, 2> S;
+        SymmetricTensor<4, 2> D;
+        double                dA, HdA, p;
+      };
+
+      /// The base vectors a_0, a_1 at a point from the nodal displacements.
+      void
+      base_vectors(const CellContext                        &ctx,
+                   const ReferenceGeometry::Point           &P,
+                   const std::array<double, 2>              *dN,
+                   const std::vector<std::array<double, 3>> &u_node,
+                   PointState                               &s)
+      {
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            s.a0[d] = P.E[0][d];
+            s.a1[d] = P.E[1][d];
+          }
+        for (unsigned int a = 0; a < ctx.n_node; ++a)
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              s.a0[d] += u_node[a][d] * dN[a][0];
+              s.a1[d] += u_node[a][d] * dN[a][1];
+            }
+      }
+
+      /// The internal and external forces of a point: the internal force
+      /// of node a is H (tau_a0 a_0 + tau_a1 a_1) dA with
+      /// tau_a = S grad_S N_a.
+      void
+      add_point_forces(const CellContext  &ctx,
+                       const PointState   &s,
+                       const double       *N,
+                       const Tensor<1, 3> &dead_load,
+                       CellScratch        &scratch,
+                       CellCopy           &copy)
+      {
+        const Tensor<1, 3> area_vector = cross_product_3d(s.a0, s.a1);
+        for (unsigned int a = 0; a < ctx.n_node; ++a)
+          for (unsigned int c = 0; c < 3; ++c)
+            {
+              const unsigned int i = ctx.dof_of[a][c];
+              const double       f_ext =
+                (s.p * area_vector[c] + dead_load[c]) * N[a] * s.dA;
+              copy.residual(i) +=
+                s.HdA
+                  * (scratch.tau[a][0] * s.a0[c] + scratch.tau[a][1] * s.a1[c])
+                - f_ext;
+              copy.external(i) += f_ext;
+            }
+      }
+
+      /**
+       * The material and geometric stiffness of a point into the upper
+       * node blocks (b >= a; both parts are symmetric). Material part in
+       * Voigt form: the strain of dof (a, c) is a0[c] P_a + a1[c] Q_a with
+       * P_a = (dN_a0, 0, dN_a1) and Q_a = (0, dN_a1, dN_a0) (components
+       * E11, E22, 2 E12).
+       */
+      void
+      add_point_stiffness(const CellContext           &ctx,
+                          const PointState            &s,
+                          const std::array<double, 2> *dN,
+                          CellScratch                 &scratch)
+      {
+        const auto  &D        = s.D;
+        auto        &DP       = scratch.DP;
+        auto        &DQ       = scratch.DQ;
+        const auto  &tau      = scratch.tau;
+        const auto   n_node   = ctx.n_node;
+        const auto   n_dofs   = ctx.n_dofs;
+        const double Dv[3][3] = {{D[0][0][0][0], D[0][0][1][1], D[0][0][0][1]},
+                                 {D[1][1][0][0], D[1][1][1][1], D[1][1][0][1]},
+                                 {D[0][1][0][0], D[0][1][1][1], D[0][1][0][1]}};
+        for (unsigned int b = 0; b < n_node; ++b)
+          for (unsigned int r = 0; r < 3; ++r)
+            {
+              DP[b][r] = Dv[r][0] * dN[b][0] + Dv[r][2] * dN[b][1];
+              DQ[b][r] = Dv[r][1] * dN[b][1] + Dv[r][2] * dN[b][0];
+            }
+        for (unsigned int a = 0; a < n_node; ++a)
+          for (unsigned int b = a; b < n_node; ++b)
+            {
+              // P_a . D P_b etc.
+              const double m00 = dN[a][0] * DP[b][0] + dN[a][1] * DP[b][2];
+              const double m01 = dN[a][0] * DQ[b][0] + dN[a][1] * DQ[b][2];
+              const double m10 = dN[a][1] * DP[b][1] + dN[a][0] * DP[b][2];
+              const double m11 = dN[a][1] * DQ[b][1] + dN[a][0] * DQ[b][2];
+              const double geometric =
+                s.HdA * (dN[a][0] * tau[b][0] + dN[a][1] * tau[b][1]);
+              for (unsigned int c = 0; c < 3; ++c)
+                {
+                  const double x0 = s.HdA * (s.a0[c] * m00 + s.a1[c] * m10);
+                  const double x1 = s.HdA * (s.a0[c] * m01 + s.a1[c] * m11);
+                  double *row = &scratch.K_node[(3 * a + c) * n_dofs + 3 * b];
+                  for (unsigned int d = 0; d < 3; ++d)
+                    row[d] += x0 * s.a0[d] + x1 * s.a1[d];
+                  row[c] += geometric;
+                }
+            }
+      }
+
+      /// The follower pressure's stiffness of a point:
+      /// -p N_a eps_cdk w_k with w = dN_b0 a_1 - dN_b1 a_0.
+      void
+      add_pressure_stiffness(const CellContext           &ctx,
+                             const PointState            &s,
+                             const double                *N,
+                             const std::array<double, 2> *dN,
+                             CellScratch                 &scratch)
+      {
+        for (unsigned int a = 0; a < ctx.n_node; ++a)
+          {
+            const double f = s.p * N[a] * s.dA;
+            for (unsigned int b = 0; b < ctx.n_node; ++b)
+              {
+                const Tensor<1, 3> w = f * (dN[b][0] * s.a1 - dN[b][1] * s.a0);
+                double *r0 = &scratch.P_node[(3 * a) * ctx.n_dofs + 3 * b];
+                double *r1 = r0 + ctx.n_dofs, *r2 = r1 + ctx.n_dofs;
+                r0[1] -= w[2];
+                r0[2] += w[1];
+                r1[0] += w[2];
+                r1[2] -= w[0];
+                r2[0] -= w[1];
+                r2[1] += w[0];
+              }
+          }
+      }
+
+      /// The cell matrix from the upper node blocks, mirrored, and the
+      /// pressure part, in the cell's dof order; the blocks are cleared.
+      void
+      gather_cell_matrix(const CellContext &ctx,
+                         CellScratch       &scratch,
+                         CellCopy          &copy)
+      {
+        const auto &K = scratch.K_node;
+        const auto &P = scratch.P_node;
+        const auto  n = ctx.n_dofs;
+        for (unsigned int a = 0; a < ctx.n_node; ++a)
+          for (unsigned int b = 0; b < ctx.n_node; ++b)
+            for (unsigned int c = 0; c < 3; ++c)
+              for (unsigned int d = 0; d < 3; ++d)
+                copy.matrix(ctx.dof_of[a][c], ctx.dof_of[b][d]) =
+                  (b >= a ? K[(3 * a + c) * n + 3 * b + d]
+                          : K[(3 * b + d) * n + 3 * a + c])
+                  + P[(3 * a + c) * n + 3 * b + d];
+        std::fill(scratch.K_node.begin(), scratch.K_node.end(), 0.);
+        std::fill(scratch.P_node.begin(), scratch.P_node.end(), 0.);
+      }
+
+      /// The stresses, loads and tangent of every quadrature point of a
+      /// cell (the membrane's own terms).
+      void
+      add_cell_points(const CellContext                            &ctx,
+                      const RegionMaterial                         &material,
+                      const DoFHandler<2, 3>::active_cell_iterator &cell,
+                      const unsigned int                            cell_index,
+                      CellScratch                                  &scratch,
+                      CellCopy                                     &copy)
+      {
+        const auto  &loads = ctx.loads;
+        const double H     = material.thickness;
+        const bool   pressurised =
+          ctx.loaded && loads.pressure_acts_on(cell->material_id());
+        const bool surface_loaded =
+          ctx.loaded && loads.surface_load_acts_on(cell->material_id());
+        PointState s;
+        for (unsigned int q = 0; q < ctx.n_q; ++q)
+          {
+            const auto   &P  = ctx.ref.point(cell_index, q);
+            const auto   *dN = ctx.ref.shape_derivatives(cell_index, q);
+            const double *N  = ctx.ref.shape_values(q);
+            base_vectors(ctx, P, dN, scratch.u_node, s);
+            SymmetricTensor<2, 2> C;
+            C[0][0] = s.a0 * s.a0;
+            C[0][1] = s.a0 * s.a1;
+            C[1][1] = s.a1 * s.a1;
+            if (ctx.want_stress)
+              material.law->evaluate(C, s.S, s.D);
+            s.dA  = P.JxW;
+            s.HdA = H * s.dA;
+            const Point<3> X(P.X[0], P.X[1], P.X[2]);
+            s.p                    = !pressurised           ? 0.
+                                     : ctx.uniform_pressure ? ctx.pressure_value
+                                                            : loads.pressure(X, ctx.t);
+            Tensor<1, 3> dead_load = material.density * H * ctx.g;
+            if (surface_loaded)
+              dead_load += loads.surface_load(X, ctx.t);
+            for (unsigned int a = 0; a < ctx.n_node; ++a)
+              {
+                scratch.tau[a][0] = s.S[0][0] * dN[a][0] + s.S[0][1] * dN[a][1];
+                scratch.tau[a][1] = s.S[0][1] * dN[a][0] + s.S[1][1] * dN[a][1];
+              }
+            if (ctx.want_vector)
+              add_point_forces(ctx, s, N, dead_load, scratch, copy);
+            if (!ctx.want_matrix)
+              continue;
+            add_point_stiffness(ctx, s, dN, scratch);
+            if (s.p != 0.)
+              add_pressure_stiffness(ctx, s, N, dN, scratch);
+          }
+        if (ctx.want_matrix)
+          gather_cell_matrix(ctx, scratch, copy);
+      }
+
+      /// Dead line loads on the listed boundaries of a cell.
+      void
+      add_line_loads(const CellContext                            &ctx,
+                     const DoFHandler<2, 3>::active_cell_iterator &cell,
+                     CellScratch                                  &scratch,
+                     CellCopy                                     &copy)
+      {
+        const auto &boundaries = ctx.loads.line_load_boundaries();
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary()
+              && boundaries.count(cell->face(f)->boundary_id()))
+            {
+              auto &fe_face_values = scratch.fe_face_values;
+              fe_face_values.reinit(cell, f);
+              for (const unsigned int q :
+                   fe_face_values.quadrature_point_indices())
+                {
+                  const Tensor<1, 3> load =
+                    ctx.loads.line_load(fe_face_values.quadrature_point(q),
+                                        ctx.t);
+                  for (unsigned int i = 0; i < ctx.n_dofs; ++i)
+                    {
+                      const unsigned int c = ctx.ref.component(i);
+                      const double       f_ext =
+                        load[c] * fe_face_values.shape_value_component(i, q, c)
+                        * fe_face_values.JxW(q);
+                      copy.residual(i) -= f_ext;
+                      copy.external(i) += f_ext;
+                    }
+                }
+            }
+      }
+
+      /**
+       * Adds a cell's matrix and vectors to the global ones, one cell at a
+       * time in cell order (the sums over cells are formed as on one
+       * thread): cells without constraints and with owned rows at the
+       * precomputed positions, cells whose constrained dofs (rigid plates)
+       * have owned targets condensed at precomputed positions, the others
+       * through the constraints.
+       */
+      struct CellCopier
+      {
+        const AffineConstraints<double> &constraints;
+        const AssemblyRequest           &request;
+        LA::MatrixPositions             &positions;
+        double                          *residual_values;
+        double                          *external_values;
+        bool                             want_matrix;
+
+        /// A cell vector: by local index on the fast path, else through
+        /// the constraints.
+        void
+        add_vector(const CellCopy       &copy,
+                   const Vector<double> &cell_vector,
+                   double               *local,
+                   LA::Vector           *target) const
+        {
+          if (copy.fast && local)
+            positions.add_vector(copy.cell_index, cell_vector.data(), local);
+          else if (copy.condensed && local
+                   && positions.condensed_owned(copy.cell_index))
+            positions.add_condensed_vector(copy.cell_index,
+                                           cell_vector.data(),
+                                           local);
+          else if (target)
+            constraints.distribute_local_to_global(cell_vector,
+                                                   copy.dof_indices,
+                                                   *target);
+        }
+
+        void
+        operator()(const CellCopy &copy) const
+        {
+          for (unsigned int k = 0; k < request.cell_terms.size(); ++k)
+            request.cell_terms[k]->commit(*copy.records[k], copy.dof_indices);
+          if (copy.fast)
+            {
+              positions.add(copy.cell_index, &copy.matrix(0, 0));
+              add_vector(copy,
+                         copy.residual,
+                         residual_values,
+                         request.residual);
+            }
+          else if (copy.condensed)
+            {
+              positions.add_condensed(copy.cell_index, &copy.matrix(0, 0));
+              add_vector(copy,
+                         copy.residual,
+                         residual_values,
+                         request.residual);
+            }
+          else
+            LA::distribute(constraints,
+                           copy.matrix,
+                           copy.residual,
+                           copy.dof_indices,
+                           want_matrix ? request.tangent : nullptr,
+                           request.residual);
+          add_vector(copy, copy.external, external_values, request.external);
+        }
+      };
+    } // namespace
+
     void
     MembraneAssembler::assemble(const LA::Vector                &u,
                                 const AffineConstraints<double> &constraints,
@@ -161,45 +557,20 @@ namespace pneuma
       const auto     &fe = dof_handler->get_fe();
       const QGauss<2> quadrature(degree + 1);
       const QGauss<1> face_quadrature(degree + 1);
-
-      const unsigned int n_dofs = fe.n_dofs_per_cell();
-      const unsigned int n_q    = quadrature.size();
-
-      // Form finding: the form-finding laws, and no load.
-      const bool loaded      = form_finding_laws.empty();
-      const bool want_matrix = request.tangent != nullptr;
-      const bool want_vector =
-        request.residual != nullptr || request.external != nullptr;
-      // The applied loads alone (the reactions' statistics) need no
-      // stresses.
-      const bool   want_stress = want_matrix || request.residual != nullptr;
-      const double t           = request.time;
-      loads.set_time(t);
-      const Tensor<1, 3> g =
-        loaded && loads.has_gravity() ? loads.gravity(t) : Tensor<1, 3>();
-
-      const ReferenceGeometry &ref    = reference_geometry();
-      const unsigned int       n_node = ref.n_nodes();
-      const bool               direct = want_matrix
+      loads.set_time(request.time);
+      const CellContext ctx    = make_context(reference_geometry(),
+                                           loads,
+                                           form_finding_laws.empty(),
+                                           request,
+                                           quadrature.size(),
+                                           fe.n_dofs_per_cell());
+      const auto       &ref    = ctx.ref;
+      const bool        direct = ctx.want_matrix
                           && positions.update(*request.tangent,
                                               ref.dof_indices(0),
                                               ref.n_cells(),
-                                              n_dofs,
+                                              ctx.n_dofs,
                                               constraints);
-      double *residual_values = direct && request.residual
-                                  ? positions.local_values(*request.residual)
-                                  : nullptr;
-      double *external_values = direct && request.external
-                                  ? positions.local_values(*request.external)
-                                  : nullptr;
-      // A pressure that does not depend on the position is evaluated once.
-      const bool   uniform_pressure = loaded && loads.pressure_is_uniform();
-      const double pressure_value =
-        uniform_pressure ? loads.pressure(Point<3>(), t) : 0.;
-      // dof_of[a][c]: the cell dof of node a, component c.
-      std::vector<std::array<unsigned int, 3>> dof_of(n_node);
-      for (unsigned int i = 0; i < n_dofs; ++i)
-        dof_of[ref.node(i)][ref.component(i)] = i;
 
       // The locally owned cells in the order of the reference data.
       std::vector<DoFHandler<2, 3>::active_cell_iterator> cells;
@@ -213,282 +584,64 @@ namespace pneuma
       const auto worker = [&](const CellIterator &it,
                               CellScratch        &scratch,
                               CellCopy           &copy) {
-        const auto                    &cell       = *it;
-        const unsigned int             cell_index = it - first;
-        const types::global_dof_index *cell_dofs  = ref.dof_indices(cell_index);
-        auto                          &u_node     = scratch.u_node;
-        auto                          &DP         = scratch.DP;
-        auto                          &DQ         = scratch.DQ;
-        auto                          &tau        = scratch.tau;
-        auto                          &K_node     = scratch.K_node;
-        auto                          &P_node     = scratch.P_node;
-        auto                          &cell_matrix   = copy.matrix;
-        auto                          &cell_residual = copy.residual;
-        auto                          &cell_external = copy.external;
-        auto                          &local_u       = copy.local_u;
-        copy.cell_index                              = cell_index;
-        std::copy(cell_dofs, cell_dofs + n_dofs, copy.dof_indices.begin());
-        for (unsigned int i = 0; i < n_dofs; ++i)
-          {
-            local_u[i]                            = u[copy.dof_indices[i]];
-            u_node[ref.node(i)][ref.component(i)] = local_u[i];
-          }
-        cell_matrix   = 0;
-        cell_residual = 0;
-        cell_external = 0;
-
-        const RegionMaterial &material =
-          loaded ? materials[cell->material_id()]
-                 : form_finding_laws.at(cell->material_id());
-        const double H = material.thickness;
-        const bool   pressurised =
-          loaded && loads.pressure_acts_on(cell->material_id());
-        const bool surface_loaded =
-          loaded && loads.surface_load_acts_on(cell->material_id());
-
-        for (unsigned int q = 0; q < n_q; ++q)
-          {
-            const auto   &P  = ref.point(cell_index, q);
-            const auto   *dN = ref.shape_derivatives(cell_index, q);
-            const double *N  = ref.shape_values(q);
-            // a_alpha = E_alpha + sum_a u_a dN_a/dS_alpha.
-            Tensor<1, 3> a0, a1;
-            for (unsigned int d = 0; d < 3; ++d)
-              {
-                a0[d] = P.E[0][d];
-                a1[d] = P.E[1][d];
-              }
-            for (unsigned int a = 0; a < n_node; ++a)
-              for (unsigned int d = 0; d < 3; ++d)
-                {
-                  a0[d] += u_node[a][d] * dN[a][0];
-                  a1[d] += u_node[a][d] * dN[a][1];
-                }
-            SymmetricTensor<2, 2> C;
-            C[0][0] = a0 * a0;
-            C[0][1] = a0 * a1;
-            C[1][1] = a1 * a1;
-            SymmetricTensor<2, 2> S;
-            SymmetricTensor<4, 2> D;
-            if (want_stress)
-              material.law->evaluate(C, S, D);
-            const double dA  = P.JxW;
-            const double HdA = H * dA;
-
-            const Point<3>     X(P.X[0], P.X[1], P.X[2]);
-            const double       p           = !pressurised       ? 0.
-                                             : uniform_pressure ? pressure_value
-                                                                : loads.pressure(X, t);
-            const Tensor<1, 3> area_vector = cross_product_3d(a0, a1);
-            Tensor<1, 3>       dead_load   = material.density * H * g;
-            if (surface_loaded)
-              dead_load += loads.surface_load(X, t);
-
-            // tau_a = S grad_S N_a: the internal force of node a is
-            // H (tau_a0 a_0 + tau_a1 a_1) dA.
-            for (unsigned int a = 0; a < n_node; ++a)
-              {
-                tau[a][0] = S[0][0] * dN[a][0] + S[0][1] * dN[a][1];
-                tau[a][1] = S[0][1] * dN[a][0] + S[1][1] * dN[a][1];
-              }
-            if (want_vector)
-              for (unsigned int a = 0; a < n_node; ++a)
-                for (unsigned int c = 0; c < 3; ++c)
-                  {
-                    const unsigned int i = dof_of[a][c];
-                    const double       f_ext =
-                      (p * area_vector[c] + dead_load[c]) * N[a] * dA;
-                    cell_residual(i) +=
-                      HdA * (tau[a][0] * a0[c] + tau[a][1] * a1[c]) - f_ext;
-                    cell_external(i) += f_ext;
-                  }
-            if (!want_matrix)
-              continue;
-
-            // Material part in Voigt form: the strain of dof (a, c) is
-            // a0[c] P_a + a1[c] Q_a with P_a = (dN_a0, 0, dN_a1) and
-            // Q_a = (0, dN_a1, dN_a0) (components E11, E22, 2 E12).
-            const double Dv[3][3] = {
-              {D[0][0][0][0], D[0][0][1][1], D[0][0][0][1]},
-              {D[1][1][0][0], D[1][1][1][1], D[1][1][0][1]},
-              {D[0][1][0][0], D[0][1][1][1], D[0][1][0][1]}};
-            for (unsigned int b = 0; b < n_node; ++b)
-              for (unsigned int r = 0; r < 3; ++r)
-                {
-                  DP[b][r] = Dv[r][0] * dN[b][0] + Dv[r][2] * dN[b][1];
-                  DQ[b][r] = Dv[r][1] * dN[b][1] + Dv[r][2] * dN[b][0];
-                }
-            // The material and geometric parts are symmetric: pairs
-            // b >= a, mirrored.
-            for (unsigned int a = 0; a < n_node; ++a)
-              for (unsigned int b = a; b < n_node; ++b)
-                {
-                  // P_a . D P_b etc.
-                  const double m00 = dN[a][0] * DP[b][0] + dN[a][1] * DP[b][2];
-                  const double m01 = dN[a][0] * DQ[b][0] + dN[a][1] * DQ[b][2];
-                  const double m10 = dN[a][1] * DP[b][1] + dN[a][0] * DP[b][2];
-                  const double m11 = dN[a][1] * DQ[b][1] + dN[a][0] * DQ[b][2];
-                  const double geometric =
-                    HdA * (dN[a][0] * tau[b][0] + dN[a][1] * tau[b][1]);
-                  for (unsigned int c = 0; c < 3; ++c)
-                    {
-                      const double x0  = HdA * (a0[c] * m00 + a1[c] * m10);
-                      const double x1  = HdA * (a0[c] * m01 + a1[c] * m11);
-                      double      *row = &K_node[(3 * a + c) * n_dofs + 3 * b];
-                      for (unsigned int d = 0; d < 3; ++d)
-                        row[d] += x0 * a0[d] + x1 * a1[d];
-                      row[c] += geometric;
-                    }
-                }
-            if (p != 0.)
-              for (unsigned int a = 0; a < n_node; ++a)
-                {
-                  // Follower pressure: -p N_a eps_cdk w_k with
-                  // w = dN_b0 a_1 - dN_b1 a_0.
-                  const double s = p * N[a] * dA;
-                  for (unsigned int b = 0; b < n_node; ++b)
-                    {
-                      const Tensor<1, 3> w =
-                        s * (dN[b][0] * a1 - dN[b][1] * a0);
-                      double *r0 = &P_node[(3 * a) * n_dofs + 3 * b];
-                      double *r1 = r0 + n_dofs, *r2 = r1 + n_dofs;
-                      r0[1] -= w[2];
-                      r0[2] += w[1];
-                      r1[0] += w[2];
-                      r1[2] -= w[0];
-                      r2[0] -= w[1];
-                      r2[1] += w[0];
-                    }
-                }
-          }
-        if (want_matrix)
-          {
-            // Mirror the upper node blocks and add the pressure part, in
-            // the cell's dof order.
-            for (unsigned int a = 0; a < n_node; ++a)
-              for (unsigned int b = 0; b < n_node; ++b)
-                for (unsigned int c = 0; c < 3; ++c)
-                  for (unsigned int d = 0; d < 3; ++d)
-                    {
-                      const double k =
-                        (b >= a ? K_node[(3 * a + c) * n_dofs + 3 * b + d]
-                                : K_node[(3 * b + d) * n_dofs + 3 * a + c])
-                        + P_node[(3 * a + c) * n_dofs + 3 * b + d];
-                      cell_matrix(dof_of[a][c], dof_of[b][d]) = k;
-                    }
-            std::fill(K_node.begin(), K_node.end(), 0.);
-            std::fill(P_node.begin(), P_node.end(), 0.);
-          }
-
-        // Dead line loads on listed boundaries.
-        if (loaded && want_vector && !loads.line_load_boundaries().empty())
-          for (const auto f : cell->face_indices())
-            if (cell->face(f)->at_boundary()
-                && loads.line_load_boundaries().count(
-                  cell->face(f)->boundary_id()))
-              {
-                auto &fe_face_values = scratch.fe_face_values;
-                fe_face_values.reinit(cell, f);
-                for (unsigned int q = 0; q < face_quadrature.size(); ++q)
-                  {
-                    const Tensor<1, 3> load =
-                      loads.line_load(fe_face_values.quadrature_point(q), t);
-                    for (unsigned int i = 0; i < n_dofs; ++i)
-                      {
-                        const unsigned int c = ref.component(i);
-                        const double       f_ext =
-                          load[c]
-                          * fe_face_values.shape_value_component(i, q, c)
-                          * fe_face_values.JxW(q);
-                        cell_residual(i) -= f_ext;
-                        cell_external(i) += f_ext;
-                      }
-                  }
-              }
-
-        if (!request.cell_terms.empty())
-          {
-            for (unsigned int k = 0; k < request.cell_terms.size(); ++k)
-              request.cell_terms[k]->cell(cell,
-                                          ref,
-                                          cell_index,
-                                          local_u,
-                                          want_matrix ? &cell_matrix : nullptr,
-                                          request.residual ? &cell_residual
-                                                           : nullptr,
-                                          *scratch.terms[k],
-                                          *copy.records[k]);
-          }
-
-        // Cells without constraints and with owned rows add their matrix
-        // at the precomputed positions.
+        const auto        &cell       = *it;
+        const unsigned int cell_index = it - first;
+        gather_cell_values(ctx, u, cell_index, scratch, copy);
+        add_cell_points(ctx,
+                        ctx.loaded ? materials[cell->material_id()]
+                                   : form_finding_laws.at(cell->material_id()),
+                        cell,
+                        cell_index,
+                        scratch,
+                        copy);
+        if (ctx.loaded && ctx.want_vector
+            && !loads.line_load_boundaries().empty())
+          add_line_loads(ctx, cell, scratch, copy);
+        for (unsigned int k = 0; k < request.cell_terms.size(); ++k)
+          request.cell_terms[k]->cell(cell,
+                                      ref,
+                                      cell_index,
+                                      copy.local_u,
+                                      ctx.want_matrix ? &copy.matrix : nullptr,
+                                      request.residual ? &copy.residual
+                                                       : nullptr,
+                                      *scratch.terms[k],
+                                      *copy.records[k]);
         copy.fast = direct && positions.direct(cell_index);
-        for (unsigned int i = 0; copy.fast && i < n_dofs; ++i)
+        for (unsigned int i = 0; copy.fast && i < ctx.n_dofs; ++i)
           copy.fast = !constraints.is_constrained(copy.dof_indices[i]);
-        // Cells with constrained dofs (rigid plates) whose targets are
-        // owned: condensed at precomputed positions.
         copy.condensed =
           direct && !copy.fast && positions.condensed(cell_index);
       };
+      const CellCopier copier{constraints,
+                              request,
+                              positions,
+                              direct && request.residual
+                                ? positions.local_values(*request.residual)
+                                : nullptr,
+                              direct && request.external
+                                ? positions.local_values(*request.external)
+                                : nullptr,
+                              ctx.want_matrix};
 
-      // One cell at a time, in cell order: the sums over cells are formed
-      // as on one thread.
-      const auto copier = [&](const CellCopy &copy) {
-        for (unsigned int k = 0; k < request.cell_terms.size(); ++k)
-          request.cell_terms[k]->commit(*copy.records[k], copy.dof_indices);
-        // A cell vector: by local index on the fast path, else through
-        // the constraints.
-        const auto add_vector = [&](const Vector<double> &cell_vector,
-                                    double               *local,
-                                    LA::Vector           *target) {
-          if (copy.fast && local)
-            positions.add_vector(copy.cell_index, cell_vector.data(), local);
-          else if (copy.condensed && local
-                   && positions.condensed_owned(copy.cell_index))
-            positions.add_condensed_vector(copy.cell_index,
-                                           cell_vector.data(),
-                                           local);
-          else if (target)
-            constraints.distribute_local_to_global(cell_vector,
-                                                   copy.dof_indices,
-                                                   *target);
-        };
-        if (copy.fast)
-          {
-            positions.add(copy.cell_index, &copy.matrix(0, 0));
-            add_vector(copy.residual, residual_values, request.residual);
-          }
-        else if (copy.condensed)
-          {
-            positions.add_condensed(copy.cell_index, &copy.matrix(0, 0));
-            add_vector(copy.residual, residual_values, request.residual);
-          }
-        else
-          LA::distribute(constraints,
-                         copy.matrix,
-                         copy.residual,
-                         copy.dof_indices,
-                         want_matrix ? request.tangent : nullptr,
-                         request.residual);
-        add_vector(copy.external, external_values, request.external);
-      };
-
-      WorkStream::run(
-        cells.cbegin(),
-        cells.cend(),
-        worker,
-        copier,
-        CellScratch(*mapping, fe, face_quadrature, n_node, request.cell_terms),
-        CellCopy(n_dofs, request.cell_terms),
-        2 * MultithreadInfo::n_threads(),
-        cells_per_task);
+      WorkStream::run(cells.cbegin(),
+                      cells.cend(),
+                      worker,
+                      copier,
+                      CellScratch(*mapping,
+                                  fe,
+                                  face_quadrature,
+                                  ctx.n_node,
+                                  request.cell_terms),
+                      CellCopy(ctx.n_dofs, request.cell_terms),
+                      2 * MultithreadInfo::n_threads(),
+                      cells_per_task);
 
       if (direct)
         positions.flush(*request.tangent);
-      if (request.residual)
-        request.residual->compress(VectorOperation::add);
-      if (request.external)
-        request.external->compress(VectorOperation::add);
+      for (auto *v : {request.residual, request.external})
+        if (v)
+          v->compress(VectorOperation::add);
       if (request.tangent)
         request.tangent->compress(VectorOperation::add);
     }

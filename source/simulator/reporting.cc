@@ -48,7 +48,7 @@ namespace pneuma
     for (const auto &e : strategies::strategy_entries())
       if (e.placement == strategies::Placement::stage && stages.uses(e.name))
         strategies.at(e.name)->add_history(row, step, state, run);
-    model.add_statistics(row, state);
+    model.add_statistics(row, state, step.time);
     if (stability.enabled())
       stability.add_history(row, step, pcout);
     for (const auto &[name, strategy] :
@@ -124,7 +124,7 @@ namespace pneuma
     row.add_count(g, "linear_solves", model.n_linear_solves(), counts);
     model.linear_solver().add_statistics(row);
     row.add(g, "final_time", "", end.time, counts | Statistics::test);
-    model.add_statistics(row, end.state);
+    model.add_statistics(row, end.state, end.time);
     for (const auto &[name, strategy] : strategies)
       if (strategy->enabled() || stages.uses(name))
         strategy->add_summary(row);

@@ -167,16 +167,17 @@ namespace pneuma
     StabilityReport
     StabilityCheck::check(Model                &model,
                           const BorderedVector &state,
+                          const double          t,
                           const bool            exact)
     {
-      TimerOutput::Scope t(model.timer(), "stability");
+      TimerOutput::Scope scope(model.timer(), "stability");
       StabilityReport    report;
       // Newton's convergence test assembled the converged state already.
-      if (!model.tangent_is_at(state))
+      if (!model.tangent_is_at(state, t))
         {
           BorderedVector residual;
           residual.field.reinit(state.field);
-          model.assemble(state, residual);
+          model.assemble(state, t, residual);
         }
       const LA::SparseMatrix &K = model.tangent_matrix();
 
@@ -260,11 +261,10 @@ namespace pneuma
       if (non_symmetric && report.note.empty())
         {
           EigenParameters p;
-          p.type    = EigenProblem::tangent;
-          p.n_modes = nearest_for_count;
-          p.solver  = EigenSolver::non_symmetric;
-          const EigenResult e =
-            EigenAnalysis::run(model, state, model.time(), p, true);
+          p.type              = EigenProblem::tangent;
+          p.n_modes           = nearest_for_count;
+          p.solver            = EigenSolver::non_symmetric;
+          const EigenResult e = EigenAnalysis::run(model, state, t, p, true);
           if (e.computed)
             {
               report.negative =

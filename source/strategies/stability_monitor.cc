@@ -59,6 +59,7 @@ namespace pneuma
     solvers::StabilityReport
     StabilityMonitor::judge(Model                         &model,
                             const solvers::BorderedVector &state,
+                            const double                   t,
                             const bool                     exact)
     {
       if (!stability)
@@ -66,7 +67,7 @@ namespace pneuma
           std::make_unique<solvers::StabilityCheck>(model.mpi_communicator());
       try
         {
-          return stability->check(model, state, exact);
+          return stability->check(model, state, t, exact);
         }
       catch (const std::exception &e)
         {

@@ -118,25 +118,52 @@ namespace pneuma
     void
     TieSubsystem::add_locally_relevant(IndexSet &relevant)
     {
-      const MPI_Comm comm = model.mpi_communicator();
-      const auto    &all  = parameters.all();
+      // The search is collective and needs the numbering of every
+      // subsystem: it runs here, in the same place on every rank.
+      find_constraint_lines();
+
+      membrane_dofs = IndexSet(relevant.size());
+      for (const auto &line : lines)
+        {
+          relevant.add_index(line.dof);
+          for (const auto &e : line.entries)
+            membrane_dofs.add_index(e.first);
+        }
+      membrane_dofs.compress();
+      relevant.add_indices(membrane_dofs);
+    }
+
+    void
+    TieSubsystem::find_constraint_lines()
+    {
+      check_regions();
+      const std::vector<TiedNode> nodes = tied_nodes();
+
+      std::vector<std::vector<MembranePoint>> found(nodes.size());
+      const std::vector<double> nearest = search_membrane(nodes, found);
+      check_distances(nodes, nearest);
+
+      const RowSums sums = share_rows(nodes, found, nearest);
+      const auto    tied = make_lines(nodes, sums);
+      check_tied_nodes(nodes, tied);
+    }
+
+    void
+    TieSubsystem::check_regions() const
+    {
       // Every region a tie names must exist in the mesh.
-      for (const auto &d : all)
+      for (const auto &d : parameters.all())
         for (const auto id : d.regions)
           check_input(membrane.material_ids().count(id) > 0,
                       d.path + "/Membrane regions",
                       "the mesh has no cells in region " + std::to_string(id));
+    }
 
-      // Every tied node, in the same order on every rank.
-      struct Node
-      {
-        unsigned int                         tie;
-        std::vector<types::global_dof_index> dofs;
-        Point<3>                             position;
-        std::vector<Tensor<1, 3>>            sections;
-        double                               reach;
-      };
-      std::vector<Node> nodes;
+    std::vector<TieSubsystem::TiedNode>
+    TieSubsystem::tied_nodes() const
+    {
+      const auto           &all = parameters.all();
+      std::vector<TiedNode> nodes;
       for (unsigned int k = 0; k < all.size(); ++k)
         {
           const TieDefinition &d    = all[k];
@@ -149,25 +176,36 @@ namespace pneuma
             dofs.erase(dofs.begin());
           for (const auto &node_dofs : dofs)
             {
-              Node n;
+              TiedNode n;
               n.tie          = k;
               n.dofs         = node_dofs;
               const auto ref = [&](const unsigned int c) {
                 return (*view.reference)[node_dofs[c] - view.offset];
               };
-              n.position = Point<3>(ref(0), ref(1), ref(2));
-              if (view.section_vectors && d.follow_section)
-                for (unsigned int v = 0; v < 2; ++v)
-                  n.sections.push_back(Tensor<1, 3>(
-                    {ref(3 + 3 * v), ref(4 + 3 * v), ref(5 + 3 * v)}));
+              n.position        = Point<3>(ref(0), ref(1), ref(2));
+              const auto &slots = view.section_components;
+              if (!slots.empty() && d.follow_section)
+                {
+                  n.section_slots = slots;
+                  for (unsigned int v = 0; v < 2; ++v)
+                    n.sections.push_back(Tensor<1, 3>({ref(slots[3 * v]),
+                                                       ref(slots[3 * v + 1]),
+                                                       ref(slots[3 * v + 2])}));
+                }
               n.reach = (d.max_distance > 0.) ? d.max_distance : view.radius;
               nodes.push_back(n);
             }
         }
+      return nodes;
+    }
 
-      // The nearest membrane points of each node on this rank's cells.
-      std::vector<std::vector<MembranePoint>> found(nodes.size());
-      std::vector<double>                     distance(nodes.size());
+    std::vector<double>
+    TieSubsystem::search_membrane(
+      const std::vector<TiedNode>             &nodes,
+      std::vector<std::vector<MembranePoint>> &found) const
+    {
+      const auto         &all = parameters.all();
+      std::vector<double> distance(nodes.size());
       for (unsigned int n = 0; n < nodes.size(); ++n)
         {
           found[n]    = nearest_membrane_points(membrane.mapping(),
@@ -185,8 +223,15 @@ namespace pneuma
                     nodes.size(),
                     MPI_DOUBLE,
                     MPI_MIN,
-                    comm);
+                    model.mpi_communicator());
+      return nearest;
+    }
 
+    void
+    TieSubsystem::check_distances(const std::vector<TiedNode> &nodes,
+                                  const std::vector<double>   &nearest)
+    {
+      const auto &all = parameters.all();
       offsets.assign(all.size(), 0.);
       for (unsigned int n = 0; n < nodes.size(); ++n)
         {
@@ -204,13 +249,20 @@ namespace pneuma
                         + " the maximum distance " + std::to_string(r) + " m");
           offsets[nodes[n].tie] = std::max(offsets[nodes[n].tie], nearest[n]);
         }
+    }
 
+    TieSubsystem::RowSums
+    TieSubsystem::share_rows(
+      const std::vector<TiedNode>                   &nodes,
+      const std::vector<std::vector<MembranePoint>> &found,
+      const std::vector<double>                     &nearest) const
+    {
       // Every cell (on any rank) whose point is as near as the nearest
       // writes its rows as (node, slot, m, (membrane dof, weight) x m),
-      // slot c < 3 the position's component c, 3 + 3 v + c that of the
-      // section vector v. A node on a cell edge or vertex lies in several
-      // cells: the rows are averaged over them (the same for the position,
-      // the mean of the one-sided gradients for a section vector).
+      // slot c < 3 the position's component c, section_slots[3 v + c]
+      // that of the section vector v. A node on a cell edge or vertex lies in
+      // several cells: the rows are averaged over them (the same for the
+      // position, the mean of the one-sided gradients for a section vector).
       std::vector<double> local;
       const auto          write = [&](const unsigned int n,
                              const unsigned int slot,
@@ -236,15 +288,15 @@ namespace pneuma
                   const Tensor<1, 3> &A = nodes[n].sections[v];
                   if (std::abs(A * normal) <= 0.5 * A.norm())
                     for (unsigned int c = 0; c < 3; ++c)
-                      write(n, 3 + 3 * v + c, rows[3 * (v + 1) + c]);
+                      write(n,
+                            nodes[n].section_slots[3 * v + c],
+                            rows[3 * (v + 1) + c]);
                 }
             }
 
-      std::vector<std::map<
-        unsigned int,
-        std::pair<unsigned int, std::map<types::global_dof_index, double>>>>
-        sum(nodes.size());
-      for (const auto &part : Utilities::MPI::all_gather(comm, local))
+      RowSums sum(nodes.size());
+      for (const auto &part :
+           Utilities::MPI::all_gather(model.mpi_communicator(), local))
         for (std::size_t k = 0; k + 2 < part.size();)
           {
             const auto        n    = static_cast<unsigned int>(part[k]);
@@ -257,10 +309,17 @@ namespace pneuma
                 part[k + 3 + 2 * e])] += part[k + 4 + 2 * e];
             k += 3 + 2 * m;
           }
+      return sum;
+    }
+
+    std::set<types::global_dof_index>
+    TieSubsystem::make_lines(const std::vector<TiedNode> &nodes,
+                             const RowSums               &sums)
+    {
       lines.clear();
       std::set<types::global_dof_index> tied;
       for (unsigned int n = 0; n < nodes.size(); ++n)
-        for (const auto &[slot, row] : sum[n])
+        for (const auto &[slot, row] : sums[n])
           {
             Line line;
             line.dof = nodes[n].dofs[slot];
@@ -270,9 +329,17 @@ namespace pneuma
             tied.insert(line.dof);
             lines.push_back(std::move(line));
           }
+      return tied;
+    }
 
+    void
+    TieSubsystem::check_tied_nodes(
+      const std::vector<TiedNode>             &nodes,
+      const std::set<types::global_dof_index> &tied)
+    {
       // Checks every rank makes alike: no node tied twice; a solid beam's
       // section follows through at least one of its vectors.
+      const auto &all = parameters.all();
       tied_translations.assign(all.size(), {});
       std::set<types::global_dof_index> seen;
       for (const auto &n : nodes)
@@ -284,7 +351,7 @@ namespace pneuma
                       "the node at " + to_string(n.position) + " of " + name
                         + " is tied twice");
           bool section = n.sections.empty();
-          for (unsigned int i = 3; i < n.dofs.size(); ++i)
+          for (const unsigned int i : n.section_slots)
             section = section || tied.count(n.dofs[i]) > 0;
           check_input(section,
                       d.path + "/Section",
@@ -297,16 +364,6 @@ namespace pneuma
                                           n.dofs.begin(),
                                           n.dofs.begin() + 3);
         }
-
-      membrane_dofs = IndexSet(relevant.size());
-      for (const auto &line : lines)
-        {
-          relevant.add_index(line.dof);
-          for (const auto &e : line.entries)
-            membrane_dofs.add_index(e.first);
-        }
-      membrane_dofs.compress();
-      relevant.add_indices(membrane_dofs);
     }
 
     void
@@ -338,7 +395,8 @@ namespace pneuma
 
     void
     TieSubsystem::add_statistics(Statistics &statistics,
-                                 const LA::Vector &) const
+                                 const LA::Vector &,
+                                 const double) const
     {
       constexpr auto    all = Statistics::all, summary = Statistics::summary;
       const LA::Vector &r     = model.unconstrained_residual();

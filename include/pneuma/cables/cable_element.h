@@ -124,13 +124,13 @@ namespace pneuma
       virtual Quadrature<1>
       quadrature() const = 0;
 
-      /// True if components 3-5 and 6-8 are the changes of the section
-      /// semi-axis vectors a1, a2 (the contact then sees the current
-      /// section).
-      virtual bool
-      has_section_vectors() const
+      /// The components that are the changes of the section semi-axis
+      /// vectors a1 (the first three) and a2 (the next three), so that the
+      /// contact sees the current section; empty if the element has none.
+      virtual std::vector<unsigned int>
+      section_vector_components() const
       {
-        return false;
+        return {};
       }
       /// True if the element carries a couple at its end ("End moment").
       virtual bool

@@ -112,7 +112,8 @@ namespace pneuma
       force_scale(const LA::Vector &field) const override;
       void
       add_statistics(Statistics       &statistics,
-                     const LA::Vector &field) const override;
+                     const LA::Vector &field,
+                     const double      t) const override;
       void
       write_output_files(const std::string &directory,
                          const unsigned int step,

@@ -33,6 +33,7 @@
 
 #include <pneuma/cables/cable_parameters.h>
 #include <pneuma/core/linear_algebra.h>
+#include <pneuma/core/vtu_series.h>
 #include <pneuma/loads/loads.h>
 
 #include <array>
@@ -78,9 +79,9 @@ namespace pneuma
       const Vector<double> *reference = nullptr;
       /// Larger semi-axis of the section [m].
       double radius = 0.;
-      /// True if components 3-5 and 6-8 are the changes of the section
-      /// semi-axis vectors (CableElement::has_section_vectors()).
-      bool section_vectors = false;
+      /// The components of the section semi-axis vectors a1, a2
+      /// (CableElement::section_vector_components(); empty: none).
+      std::vector<unsigned int> section_components;
     };
 
     /// The cable block of the global system.
@@ -284,14 +285,15 @@ namespace pneuma
       Vector<double>
       extract(const Body &b, const LA::Vector &u) const;
 
-      const CableParameters                      &parameters;
-      const loads::Loads                         &loads;
-      MPI_Comm                                    comm     = MPI_COMM_SELF;
-      bool                                        is_owner = true;
-      unsigned int                                rank = 0, n_ranks = 1;
-      std::vector<std::unique_ptr<Body>>          bodies;
-      types::global_dof_index                     first = 0, n_cable_dofs = 0;
-      std::vector<std::pair<double, std::string>> pvd_records;
+      const CableParameters             &parameters;
+      const loads::Loads                &loads;
+      MPI_Comm                           comm     = MPI_COMM_SELF;
+      bool                               is_owner = true;
+      unsigned int                       rank = 0, n_ranks = 1;
+      std::vector<std::unique_ptr<Body>> bodies;
+      types::global_dof_index            first = 0, n_cable_dofs = 0;
+      /// cables.pvd over one cables_<k>_NNNN.vtu per cable (part) and step.
+      VtuSeries series{"cables"};
       std::vector<std::vector<std::pair<std::string, Vector<double>>>>
         extra_fields;
       /// Per cable: the mode shapes of the next write_output().

@@ -101,7 +101,8 @@ namespace pneuma
       border_for(const LA::Vector &field, const double t) const override;
       void
       add_statistics(Statistics       &statistics,
-                     const LA::Vector &field) const override;
+                     const LA::Vector &field,
+                     const double      t) const override;
       void
       add_output_fields(const LA::Vector &field) override;
 

@@ -80,7 +80,8 @@ namespace pneuma
       refresh(const LA::Vector &field) override;
       void
       add_statistics(Statistics       &statistics,
-                     const LA::Vector &field) const override;
+                     const LA::Vector &field,
+                     const double      t) const override;
       void
       add_output_fields(const LA::Vector &field) override;
       /// False while any pair uses the smoothed master normal, or while a point

@@ -67,6 +67,35 @@ namespace pneuma
       double       friction_force = 0.;
     };
 
+    /**
+     * What an assembly of the contact records at a state (written into the
+     * record it is given, never into the system): per pair and point the
+     * line load, the friction anchor that a commit would keep, and the
+     * master a near point is near; the pairs' reports; the force per
+     * master cell.
+     */
+    struct ContactRecord
+    {
+      struct Pair
+      {
+        /// Line load N (>= 0) per point, or 0.
+        std::vector<double> line_load;
+        /// Friction: the anchor (local master, -1: none) and its
+        /// convective coordinates that a commit keeps.
+        std::vector<int>      pending_anchor;
+        std::vector<Point<2>> pending_xi;
+        /// The step check's reference: the master a near point is near
+        /// (-1: none here), the projection and the offset x - y(xi).
+        std::vector<int>          seen_master;
+        std::vector<Point<2>>     seen_xi;
+        std::vector<Tensor<1, 3>> seen_offset;
+      };
+      std::vector<Pair>          pairs;
+      std::vector<ContactReport> reports;
+      /// Contact force per master cell.
+      std::vector<double> master_force;
+    };
+
     /// The contact pairs of a scene.
     class ContactSystem
     {
@@ -104,20 +133,34 @@ namespace pneuma
       add_sparsity(DynamicSparsityPattern          &dsp,
                    const AffineConstraints<double> &constraints) const;
 
-      /// Add the penalty forces (to r = f_int - f_ext) and their tangent at
-      /// @p u (ghosted); compresses what it touched. Keeps the point data
-      /// for reports() and the output fields, unless @p probe (an assembly
-      /// for a report, which leaves them as they were).
+      /**
+       * Add the penalty forces (to r = f_int - f_ext) and their tangent at
+       * @p u (ghosted); compresses what it touched. Changes nothing of the
+       * system: what the assembly finds at @p u goes to @p record
+       * (new_record() sizes it).
+       */
       void
       assemble(const LA::Vector                &u,
                const AffineConstraints<double> &constraints,
                LA::SparseMatrix                *tangent,
                LA::Vector                      *residual,
-               const bool                       probe = false);
+               ContactRecord                   &record) const;
 
-      /// Accept the friction state of the last assembly (the converged
-      /// one): stick anchors stay, slipping ones move. The points near the
-      /// master in it become the reference of check_step().
+      /// A record sized for this system's pairs, points and masters.
+      ContactRecord
+      new_record() const;
+
+      /// Record the state @p u (ghosted): the reports, line loads, contact
+      /// pressures and friction anchors that commit_step() and the outputs
+      /// use.
+      void
+      record_state(const LA::Vector                &u,
+                   const AffineConstraints<double> &constraints);
+
+      /// Accept the friction state recorded (record_state() at the
+      /// converged state): stick anchors stay, slipping ones move. The
+      /// points near the master in it become the reference of
+      /// check_step().
       void
       commit_step();
 
@@ -152,7 +195,7 @@ namespace pneuma
       const std::vector<ContactReport> &
       reports() const
       {
-        return committed_reports.empty() ? last_reports : committed_reports;
+        return committed_reports.empty() ? recorded.reports : committed_reports;
       }
 
       /**
@@ -169,18 +212,13 @@ namespace pneuma
       bool
       smoothed() const;
 
-      /// True if a pair with friction had a slipping point in the last
-      /// assembly (the same on every rank): its tangent is not symmetric.
-      bool
-      slipping() const;
-
       /// Contact line load (N, positive in compression) averaged over each
-      /// element of cable @p k in the last assembly (every rank).
+      /// element of cable @p k at the recorded state (every rank).
       Vector<double>
       cable_line_load(const unsigned int k) const;
 
-      /// Contact pressure on the owned membrane cells (force over area) of
-      /// the last assembly, indexed by active cell index.
+      /// Contact pressure on the owned membrane cells (force over area) at
+      /// the recorded state, indexed by active cell index.
       Vector<float>
       membrane_pressure(const unsigned int n_active_cells) const;
 
@@ -217,25 +255,85 @@ namespace pneuma
         std::vector<CablePoint>                  points;
         /// Per cable cell: candidate master cells (indices).
         std::vector<std::vector<unsigned int>> candidates;
-        /// Per point of the last assembly: line load N (>= 0), or 0.
-        std::vector<double> line_load;
         /// Smoothed master normal: the nodal normals of the pair's cells
         /// (mutable: a cache of the current configuration's values).
         bool                 smoothed = false;
         mutable NodalNormals normals;
         /// Friction: per point the stick anchor (local master, -1: none)
-        /// and its convective coordinates, and what the last assembly
-        /// would make of it.
-        std::vector<int>      anchor, pending_anchor;
-        std::vector<Point<2>> anchor_xi, pending_xi;
+        /// and its convective coordinates.
+        std::vector<int>      anchor;
+        std::vector<Point<2>> anchor_xi;
         /// Step check: per point the master (local index, -1: none on
         /// this rank or not near), the convective coordinates of the
-        /// projection and the offset x - y(xi) from it, in the last
-        /// assembly (seen) and at the last committed state (start).
-        std::vector<int>          seen_master, start_master;
-        std::vector<Point<2>>     seen_xi, start_xi;
-        std::vector<Tensor<1, 3>> seen_offset, start_offset;
+        /// projection and the offset x - y(xi) from it at the last
+        /// committed state.
+        std::vector<int>          start_master;
+        std::vector<Point<2>>     start_xi;
+        std::vector<Tensor<1, 3>> start_offset;
       };
+      /// The current end points of every cable element of a pair.
+      using Slave = std::vector<std::array<Tensor<1, 3>, 2>>;
+      /// The nearest master of each point of a pair: here (distance,
+      /// rank) and over all ranks, its master, projection, and whether
+      /// this rank assembles it.
+      struct Best
+      {
+        double distance;
+        int    rank;
+      };
+      struct Nearest
+      {
+        std::vector<Best>         local, global;
+        std::vector<unsigned int> master;
+        std::vector<Projection>   projection;
+        std::vector<bool>         held;
+      };
+      class Patches;
+      class Distributor;
+
+      /// The current sections of a solid beam's elements (none for a
+      /// cable).
+      std::vector<SlaveSection>
+      current_sections(const PairData &d, const LA::Vector &u) const;
+      /// The nearest master of each point of pair @p d.
+      Nearest
+      nearest(const PairData &d, const Slave &slave, Patches &patches) const;
+      /// assemble() of pair @p k.
+      void
+      assemble_pair(const unsigned int               k,
+                    const LA::Vector                &u,
+                    const AffineConstraints<double> &constraints,
+                    LA::SparseMatrix                *tangent,
+                    LA::Vector                      *residual,
+                    ContactRecord                   &record) const;
+      /// The terms of point @p q of pair @p k (assembled here) with its
+      /// record: the penalty force, then friction.
+      void
+      add_point(const unsigned int               k,
+                const unsigned int               q,
+                const double                     gap,
+                const Nearest                   &near,
+                const Slave                     &slave,
+                const std::vector<SlaveSection> &sections,
+                Patches                         &patches,
+                const Vector<double>            &gradient,
+                const FullMatrix<double>        &hessian,
+                const LA::Vector                &u,
+                Distributor                     &distributor,
+                ContactReport                   &report,
+                ContactRecord                   &record) const;
+      /// The friction terms of point @p q of pair @p k in contact, and the
+      /// anchor a commit keeps.
+      void
+      add_friction(const unsigned int               k,
+                   const unsigned int               q,
+                   const Nearest                   &near,
+                   const Slave                     &slave,
+                   const std::vector<SlaveSection> &sections,
+                   Patches                         &patches,
+                   Distributor                     &distributor,
+                   ContactReport                   &report,
+                   ContactRecord                   &record) const;
 
       /// The current end points of every cable element of pair @p d at
       /// @p u (ghosted).
@@ -286,9 +384,10 @@ namespace pneuma
       std::vector<PairData>           pairs;
       /// Couplings (pair, cable cell, master) in the sparsity pattern.
       std::set<std::array<unsigned int, 3>> coupled;
-      std::vector<ContactReport>            last_reports, committed_reports;
-      /// Contact force per master cell of the last assembly.
-      std::vector<double> master_force;
+      /// The state recorded last (record_state()), and the reports of the
+      /// last commit.
+      ContactRecord              recorded;
+      std::vector<ContactReport> committed_reports;
     };
   } // namespace contact
 } // namespace pneuma

@@ -72,6 +72,23 @@ namespace pneuma
     /// Rebuild the sparsity pattern and matrices (couplings have grown).
     void
     rebuild_matrices();
+    /**
+     * For runs whose strategies never assemble a tangent (explicit
+     * dynamics, dynamic relaxation; before setup()): no sparsity pattern
+     * and no matrix are built, so the setup is cheaper and the tangent's
+     * memory is not held; residual assemblies (assemble_residual()), the
+     * lumped mass and the border for a field work as before.
+     */
+    void
+    set_matrix_free(const bool on)
+    {
+      matrix_free = on;
+    }
+    bool
+    is_matrix_free() const
+    {
+      return matrix_free;
+    }
     /// Ask every subsystem for its constraints again (they depend on a
     /// state, e.g. form finding's normal motion) and rebuild the matrices.
     void
@@ -279,7 +296,8 @@ namespace pneuma
     /// Statistics of every subsystem at @p state (call reduce() after).
     void
     add_statistics(Statistics                    &statistics,
-                   const solvers::BorderedVector &state);
+                   const solvers::BorderedVector &state,
+                   const double                   t);
     /// Write every subsystem's output files of @p state at @p step.
     void
     write_output(const std::string             &directory,
@@ -294,16 +312,17 @@ namespace pneuma
     }
 
     /**
-     * The model's tangent and border blocks are those of @p u at the
-     * model's time (its last assemble(), no shift added since), so a
-     * check of the converged state need not assemble again.
+     * The model's tangent and border blocks are those of @p u at pseudo
+     * time @p t (its last assemble(), no shift added since), so a check of
+     * the converged state need not assemble again.
      */
     bool
-    tangent_is_at(const solvers::BorderedVector &u) const;
+    tangent_is_at(const solvers::BorderedVector &u, const double t) const;
 
     /// False if a subsystem says that its tangent, as last assembled, is
-    /// not symmetric by construction (Subsystem::symmetric_tangent(): a
-    /// smoothed contact normal, friction in slip); the same on every rank.
+    /// not symmetric by construction (LinearSolverHints::symmetric_tangent:
+    /// a smoothed contact normal; or, in the last assembly of a tangent,
+    /// Assembly::symmetric: friction in slip); the same on every rank.
     bool
     symmetric_by_construction() const;
 
@@ -367,13 +386,6 @@ namespace pneuma
     time() const
     {
       return current_time;
-    }
-    /// Set that time for the reports of a state reached otherwise (a
-    /// located critical point, the last state an interrupted run saw).
-    void
-    set_time(const double t)
-    {
-      current_time = t;
     }
     /// The residual and tangent at @p u at pseudo time @p t (the model
     /// is then at @p t).
@@ -539,8 +551,13 @@ namespace pneuma
     /// Pseudo time of the loads in assemble().
     double current_time = 0.;
     /// A step has been committed (or a checkpoint loaded): steps no longer
-    /// start from the reference state (Subsystem::first_guess).
+    /// start from the reference state (NewtonAids::first_guess).
     bool started = false;
+    /// The last assembly of a tangent was symmetric for every subsystem
+    /// (Assembly::symmetric).
+    bool assembled_symmetric = true;
+    /// No pattern and no matrices (set_matrix_free()).
+    bool matrix_free = false;
     /// Mode shapes of the next write_output() (ghosted).
     std::vector<std::string> mode_names;
     std::vector<LA::Vector>  mode_fields;

@@ -69,9 +69,11 @@ namespace pneuma
     /// Residual rows of the border (scaled) and its Jacobian blocks.
     dealii::Vector<double>  *border_residual = nullptr;
     solvers::BorderCoupling *coupling        = nullptr;
-    /// An assembly for a report (Model::support_residual): subsystems keep
-    /// the state their assembly records (contact points, friction anchors).
-    bool probe = false;
+    /// Where a subsystem reports that its tangent in this assembly is not
+    /// symmetric (a slipping friction point): it sets the flag to false
+    /// (nullptr: nobody asks). An assembly changes no subsystem's state;
+    /// what a subsystem records of a state it records in refresh().
+    bool *symmetric = nullptr;
   };
 
   /// A contiguous range [first, first + size) of global unknowns.
@@ -245,12 +247,16 @@ namespace pneuma
     }
     // ---- reporting
     /// Add named values with units at the converged state @p field
-    /// (ghosted); the reactions come from Model::support_residual().
+    /// (ghosted) at pseudo time @p t; the reactions come from
+    /// Model::support_residual().
     virtual void
-    add_statistics(Statistics &statistics, const LA::Vector &field) const
+    add_statistics(Statistics       &statistics,
+                   const LA::Vector &field,
+                   const double      t) const
     {
       (void)statistics;
       (void)field;
+      (void)t;
     }
   };
 

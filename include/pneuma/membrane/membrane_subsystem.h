@@ -23,6 +23,7 @@
 
 #include <pneuma/core/capabilities.h>
 #include <pneuma/core/subsystem.h>
+#include <pneuma/core/vtu_series.h>
 #include <pneuma/geometry/adaptive_refinement.h>
 #include <pneuma/geometry/junctions.h>
 #include <pneuma/geometry/scene_generator.h>
@@ -128,7 +129,8 @@ namespace pneuma
       check_state(const LA::Vector &field) const override;
       void
       add_statistics(Statistics       &statistics,
-                     const LA::Vector &field) const override;
+                     const LA::Vector &field,
+                     const double      t) const override;
       void
       add_output_fields(const LA::Vector &field) override;
       void
@@ -292,6 +294,7 @@ namespace pneuma
                       const std::vector<LA::Vector *> &fields) override;
       void
       compute_reactions(const LA::Vector      &u,
+                        const double           t,
                         std::array<double, 3> &reaction,
                         std::array<double, 3> &applied) const;
 
@@ -335,9 +338,10 @@ namespace pneuma
       std::vector<std::array<types::global_dof_index, 3>> monitor_dofs;
       std::vector<std::array<double, 3>>                  monitor_positions;
 
-      std::unique_ptr<DataOut<2, 3>>              output;
-      std::vector<std::pair<double, std::string>> pvd_records;
-      std::vector<Vector<float>>                  output_cell_data;
+      std::unique_ptr<DataOut<2, 3>> output;
+      /// solution.pvd over the solution_NNNN.pvtu files.
+      VtuSeries                  series{"solution"};
+      std::vector<Vector<float>> output_cell_data;
     };
   } // namespace membrane
 } // namespace pneuma

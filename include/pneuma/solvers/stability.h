@@ -114,12 +114,14 @@ namespace pneuma
     public:
       explicit StabilityCheck(const MPI_Comm comm);
 
-      /// Count at @p state (the model is at its time; assembled there if
-      /// it is not). Newton's last LDL^T factorization counts if it is
-      /// close enough (doc/theory.md section 11), unless @p exact.
+      /// Count at @p state at pseudo time @p t (assembled there unless the
+      /// model's tangent is of that state). Newton's last LDL^T
+      /// factorization counts if it is close enough (doc/theory.md section
+      /// 11), unless @p exact.
       StabilityReport
       check(Model                &model,
             const BorderedVector &state,
+            const double          t,
             const bool            exact = false);
 
     private:

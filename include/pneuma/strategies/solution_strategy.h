@@ -110,6 +110,15 @@ namespace pneuma
         return false;
       }
 
+      /// Does the strategy, when the run uses it, assemble a tangent? A run
+      /// whose strategies all answer no sets the model up without a matrix
+      /// (Model::set_matrix_free()).
+      virtual bool
+      needs_tangent() const
+      {
+        return true;
+      }
+
       /// After the model's setup: the input errors the set-up model shows
       /// (throws InputError naming the entry).
       virtual void

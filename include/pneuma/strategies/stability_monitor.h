@@ -57,13 +57,16 @@ namespace pneuma
       }
 
       /**
-       * The stability of the converged @p state of @p model (at its time).
-       * @p exact: factorize the state's own tangent rather than count on
-       * Newton's last factorization. A factorization that fails leaves the
-       * state unjudged (the report says why), never the run stopped.
+       * The stability of the converged @p state of @p model at pseudo time
+       * @p t. @p exact: factorize the state's own tangent rather than count
+       * on Newton's last factorization. A factorization that fails leaves
+       * the state unjudged (the report says why), never the run stopped.
        */
       solvers::StabilityReport
-      judge(Model &model, const solvers::BorderedVector &state, bool exact);
+      judge(Model                         &model,
+            const solvers::BorderedVector &state,
+            const double                   t,
+            const bool                     exact);
 
       /// Record the report of converged step @p r (warnings for unstable
       /// states) and add its columns to the history @p row.

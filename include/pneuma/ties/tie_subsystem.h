@@ -22,6 +22,11 @@
 #include <pneuma/ties/membrane_point.h>
 #include <pneuma/ties/tie_parameters.h>
 
+#include <map>
+#include <set>
+#include <utility>
+#include <vector>
+
 namespace pneuma
 {
   namespace ties
@@ -52,8 +57,9 @@ namespace pneuma
       void
       parse_parameters(ParameterHandler &prm) override;
 
-      /// Find the membrane point of every tied node (its owner), share the
-      /// constraint lines with every rank, and make their dofs relevant.
+      /// Make the dofs of the constraint lines relevant: the tied cable
+      /// dofs and the membrane dofs they follow (the lines are found
+      /// first, by find_constraint_lines()).
       void
       add_locally_relevant(IndexSet &relevant) override;
       void
@@ -71,7 +77,8 @@ namespace pneuma
       /// the largest distance of a node from its membrane point.
       void
       add_statistics(Statistics       &statistics,
-                     const LA::Vector &field) const override;
+                     const LA::Vector &field,
+                     const double      t) const override;
 
     private:
       /// One constrained cable dof: value = sum of weight x membrane dof.
@@ -80,6 +87,70 @@ namespace pneuma
         types::global_dof_index dof;
         Combination             entries;
       };
+
+      /// A tied cable node: its tie, its dofs (the translations, then those
+      /// of the section vectors), its reference position, the section
+      /// vectors that follow the membrane and how far its membrane point
+      /// may lie.
+      struct TiedNode
+      {
+        unsigned int                         tie;
+        std::vector<types::global_dof_index> dofs;
+        Point<3>                             position;
+        /// The reference section vectors a1, a2 (a solid beam that follows
+        /// the membrane's surface; empty otherwise) and the node's
+        /// components that carry them
+        /// (CableElement::section_vector_components).
+        std::vector<Tensor<1, 3>> sections;
+        std::vector<unsigned int> section_slots;
+        double                    reach;
+      };
+
+      /// Per tied node and slot: the number of cells that wrote the row,
+      /// and the sum of their weights per membrane dof.
+      using RowSums = std::vector<std::map<
+        unsigned int,
+        std::pair<unsigned int, std::map<types::global_dof_index, double>>>>;
+
+      /// Search the membrane for the tied nodes, check what the ties ask
+      /// for, and set #lines, #offsets and #tied_translations alike on
+      /// every rank (collective).
+      void
+      find_constraint_lines();
+      /// Throw an InputError if a tie names a membrane region that has no
+      /// cells in the mesh.
+      void
+      check_regions() const;
+      /// Every tied node, in the same order on every rank.
+      std::vector<TiedNode>
+      tied_nodes() const;
+      /// The nearest membrane points of each node on this rank's cells
+      /// into @p found; returns each node's distance from the nearest of
+      /// them on any rank (collective).
+      std::vector<double>
+      search_membrane(const std::vector<TiedNode>             &nodes,
+                      std::vector<std::vector<MembranePoint>> &found) const;
+      /// Throw an InputError if a node lies farther than its reach from the
+      /// membrane; record each tie's largest distance in #offsets.
+      void
+      check_distances(const std::vector<TiedNode> &nodes,
+                      const std::vector<double>   &nearest);
+      /// The interpolation rows of the nearest membrane points of every
+      /// node, gathered from every rank and summed (collective).
+      RowSums
+      share_rows(const std::vector<TiedNode>                   &nodes,
+                 const std::vector<std::vector<MembranePoint>> &found,
+                 const std::vector<double>                     &nearest) const;
+      /// Fill #lines with the mean of the summed rows; returns the tied
+      /// dofs.
+      std::set<types::global_dof_index>
+      make_lines(const std::vector<TiedNode> &nodes, const RowSums &sums);
+      /// Throw an InputError if a node is tied twice or a solid beam's
+      /// section cannot follow the membrane (@p tied: the tied dofs); fill
+      /// #tied_translations.
+      void
+      check_tied_nodes(const std::vector<TiedNode>             &nodes,
+                       const std::set<types::global_dof_index> &tied);
 
       Model                       &model;
       membrane::MembraneSubsystem &membrane;

@@ -96,10 +96,11 @@ namespace pneuma
           return QGauss<1>(1);
         }
 
-        bool
-        has_section_vectors() const override
+        /// a1 in components 3-5, a2 in 6-8.
+        std::vector<unsigned int>
+        section_vector_components() const override
         {
-          return true;
+          return {3, 4, 5, 6, 7, 8};
         }
 
         bool

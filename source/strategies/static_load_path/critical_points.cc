@@ -59,7 +59,7 @@ namespace pneuma
           const auto newton = run.newton.solve(model, probe, quiet, false);
           if (!newton.converged || !model.check_state(probe).empty())
             break;
-          const auto r = run.stability->judge(model, probe, true);
+          const auto r = run.stability->judge(model, probe, model.time(), true);
           if (!r.computed)
             break;
           (r.negative == before ? lo : hi) = mid;
@@ -104,7 +104,7 @@ namespace pneuma
           const auto newton = run.newton.solve(model, probe, quiet, false);
           if (!newton.converged || !model.check_state(probe).empty())
             continue;
-          const auto r = run.stability->judge(model, probe, true);
+          const auto r = run.stability->judge(model, probe, model.time(), true);
           if (!r.computed || r.negative < 0 || r.negative >= stability.negative)
             continue;
           LA::Vector away(probe.field);
@@ -178,7 +178,7 @@ namespace pneuma
           const BorderedVector probe = PathConstraintProblem::model_part(x);
           if (!newton.converged || !model.check_state(probe).empty())
             break;
-          const auto r = run.stability->judge(model, probe, true);
+          const auto r = run.stability->judge(model, probe, model.time(), true);
           if (!r.computed)
             break;
           probes.push_back(

@@ -121,7 +121,8 @@ namespace pneuma
       // The stability of the converged state, before it is committed; a
       // change of the count is located between the two states.
       StabilityMonitor &monitor = *walk.run.stability;
-      a.stability        = monitor.judge(walk.model, walk.result.state, false);
+      a.stability =
+        monitor.judge(walk.model, walk.result.state, walk.model.time(), false);
       const auto changed = [&]() {
         return previous_stability.computed
                && a.stability.negative != previous_stability.negative;
@@ -129,7 +130,8 @@ namespace pneuma
       // A change counted on Newton's factorization (the tangent of the
       // last iterate) is confirmed on the state's own.
       if (a.stability.from_newton && changed())
-        a.stability = monitor.judge(walk.model, walk.result.state, true);
+        a.stability =
+          monitor.judge(walk.model, walk.result.state, walk.model.time(), true);
       // A change of the count after an extrapolated start may be the
       // extrapolation's: past a critical point it can reach another
       // equilibrium (a crumpled balloon, thousands of negative
@@ -194,8 +196,7 @@ namespace pneuma
                               : a.t_new,
                             again_state);
       walk.result.state = accepted;
-      walk.model.set_time(a.t_new);
-      a.stability = monitor.judge(walk.model, walk.result.state, true);
+      a.stability = monitor.judge(walk.model, walk.result.state, a.t_new, true);
       walk.out << "  critical point: " << to_string(c.type)
                << " at t = " << c.time << " (+-" << 0.5 * c.bracket
                << "), negative eigenvalues " << c.before << " -> " << c.after
