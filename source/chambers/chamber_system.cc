@@ -604,6 +604,9 @@ namespace pneuma
                          g.old.volume,
                          g.old.amount});
       checkpoint.put("chambers/groups", state);
+      // The scales of the border unknowns of the step (begin_step()): the
+      // model's border in the checkpoint is in these units.
+      checkpoint.put("chambers/unknown_scale", unknown_scale);
     }
 
     void
@@ -628,6 +631,14 @@ namespace pneuma
           g.empty       = s[5] != 0.;
           g.old         = GasState{s[6], s[7], s[8]};
         }
+      const auto scale =
+        checkpoint.get<std::vector<double>>("chambers/unknown_scale");
+      check_input(scale.size() == unknown_scale.size(),
+                  "--restart " + checkpoint.directory(),
+                  "the checkpoint has " + std::to_string(scale.size())
+                    + " chamber unknowns, the input "
+                    + std::to_string(unknown_scale.size()));
+      unknown_scale = scale;
     }
 
     void
