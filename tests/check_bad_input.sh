@@ -294,18 +294,51 @@ check "$dir/valid.prm"              1 "Checkpoint: adaptive refinement studies (
 check "$dir/valid.prm"              0 "stopped after step 1 as asked" --set "Output/Directory=cp" --set "Checkpoint/Stop after step=1"
 check "$dir/valid.prm"              0 "finished, 3 steps" --set "Output/Directory=cp-continued" --restart cp/checkpoint
 check "$dir/valid.prm"              1 "--restart cp/checkpoint: adaptive refinement studies (Adaptive refinement/Cycles > 0) cannot be restarted" --set "Adaptive refinement/Cycles=1" --restart cp/checkpoint
-check "$dir/valid.prm"              1 "--restart cp/checkpoint: the checkpoint's mesh has 12 coarse cells, this input's 1: it belongs to another geometry" --set "Geometry/Type=square" --restart cp/checkpoint
-check "$dir/valid.prm"              1 "--restart cp/checkpoint: the checkpoint is of another scene (171 unknowns in membrane; this input has 627 in membrane)" --set "Discretisation/Polynomial degree=2" --restart cp/checkpoint
-check "$k"                          1 "--restart cp/checkpoint: the checkpoint is of another scene (171 unknowns in membrane; this input has 186 in membrane, cables)" --set "Geometry/Type=disc" --set "Geometry/disc/Radius=0.1" --set "Boundary conditions/Fixed boundaries=0: xyz" --restart cp/checkpoint
+check "$dir/valid.prm"              1 "Geometry/Type: is 'square' here but was 'disc' in the checkpoint's run; a restart continues the checkpoint's discrete problem" --set "Geometry/Type=square" --restart cp/checkpoint
+check "$dir/valid.prm"              1 "Discretisation/Polynomial degree: is '2' here but was '1' in the checkpoint's run" --set "Discretisation/Polynomial degree=2" --restart cp/checkpoint
+check "$k"                          1 "Cables/Number of cables: is '1' here but was '0' in the checkpoint's run" --set "Geometry/Type=disc" --set "Geometry/disc/Radius=0.1" --set "Boundary conditions/Fixed boundaries=0: xyz" --restart cp/checkpoint
 mkdir -p broken && cp -r cp/checkpoint broken/ && head -c 40 cp/checkpoint/state.bin > broken/checkpoint/state.bin
 check "$dir/valid.prm"              1 "--restart broken/checkpoint: 'broken/checkpoint/state.bin' is truncated" --restart broken/checkpoint
 mkdir -p nomesh && cp -r cp/checkpoint nomesh/ && rm nomesh/checkpoint/membrane.mesh_fixed.data
-check "$dir/valid.prm"              1 "--restart nomesh/checkpoint: has no readable mesh" --restart nomesh/checkpoint
+check "$dir/valid.prm"              1 "--restart nomesh/checkpoint: 'nomesh/checkpoint/membrane.mesh_fixed.data' is missing (the manifest lists it)" --restart nomesh/checkpoint
 echo "not a checkpoint" > broken/checkpoint/state.bin
 check "$dir/valid.prm"              1 "--restart broken/checkpoint: 'broken/checkpoint/state.bin' is not a pneuma checkpoint" --restart broken/checkpoint
 check_mpi "$dir/valid.prm"          1 "--restart /nonexistent: cannot open" --restart /nonexistent
 check_mpi "$dir/valid.prm"          0 "finished, 3 steps" --set "Output/Directory=cp-continued-2" --restart cp/checkpoint
-NP=3 check_mpi "$dir/valid.prm"     1 "--restart nomesh/checkpoint: has no readable mesh" --restart nomesh/checkpoint
+# Damaged checkpoints (tests/damage_checkpoint.py): every file is checked
+# against the manifest's size and CRC32, every length in state.bin against
+# the file, before anything is restored: exit 1 naming the file, on 1 and
+# 2 ranks.
+for damage in payload size flip mesh truncated manifest format-1 forged-size forged-payload; do
+  /usr/bin/python3 "$dir/../damage_checkpoint.py" cp/checkpoint "damaged-$damage/checkpoint" "$damage"
+done
+check "$dir/valid.prm"              1 "--restart damaged-payload/checkpoint: 'damaged-payload/checkpoint/state.bin' is damaged: its CRC32 is" --restart damaged-payload/checkpoint
+check_mpi "$dir/valid.prm"          1 "--restart damaged-payload/checkpoint: 'damaged-payload/checkpoint/state.bin' is damaged: its CRC32 is" --restart damaged-payload/checkpoint
+check "$dir/valid.prm"              1 "--restart damaged-size/checkpoint: 'damaged-size/checkpoint/state.bin' is damaged: its CRC32 is" --restart damaged-size/checkpoint
+check_mpi "$dir/valid.prm"          1 "--restart damaged-size/checkpoint: 'damaged-size/checkpoint/state.bin' is damaged: its CRC32 is" --restart damaged-size/checkpoint
+check "$dir/valid.prm"              1 "--restart damaged-flip/checkpoint: 'damaged-flip/checkpoint/state.bin' is damaged: its CRC32 is" --restart damaged-flip/checkpoint
+check_mpi "$dir/valid.prm"          1 "--restart damaged-flip/checkpoint: 'damaged-flip/checkpoint/state.bin' is damaged: its CRC32 is" --restart damaged-flip/checkpoint
+check "$dir/valid.prm"              1 "--restart damaged-mesh/checkpoint: 'damaged-mesh/checkpoint/membrane.mesh' is damaged: its CRC32 is" --restart damaged-mesh/checkpoint
+check_mpi "$dir/valid.prm"          1 "--restart damaged-mesh/checkpoint: 'damaged-mesh/checkpoint/membrane.mesh' is damaged: its CRC32 is" --restart damaged-mesh/checkpoint
+check "$dir/valid.prm"              1 "--restart damaged-truncated/checkpoint: 'damaged-truncated/checkpoint/membrane.mesh_fixed.data' is truncated" --restart damaged-truncated/checkpoint
+check_mpi "$dir/valid.prm"          1 "--restart damaged-truncated/checkpoint: 'damaged-truncated/checkpoint/membrane.mesh_fixed.data' is truncated" --restart damaged-truncated/checkpoint
+check "$dir/valid.prm"              1 "--restart damaged-manifest/checkpoint: 'damaged-manifest/checkpoint/manifest' is missing: the checkpoint is incomplete or was written by an older pneuma" --restart damaged-manifest/checkpoint
+check_mpi "$dir/valid.prm"          1 "--restart damaged-manifest/checkpoint: 'damaged-manifest/checkpoint/manifest' is missing" --restart damaged-manifest/checkpoint
+check "$dir/valid.prm"              1 "--restart damaged-format-1/checkpoint: 'damaged-format-1/checkpoint/state.bin' is of checkpoint format 1 (an older pneuma), which has no checksums to verify it" --restart damaged-format-1/checkpoint
+check_mpi "$dir/valid.prm"          1 "--restart damaged-format-1/checkpoint: 'damaged-format-1/checkpoint/state.bin' is of checkpoint format 1" --restart damaged-format-1/checkpoint
+check "$dir/valid.prm"              1 "--restart damaged-forged-size/checkpoint: 'damaged-forged-size/checkpoint/state.bin' is damaged (section '" --restart damaged-forged-size/checkpoint
+check_mpi "$dir/valid.prm"          1 "--restart damaged-forged-size/checkpoint: 'damaged-forged-size/checkpoint/state.bin' is damaged (section '" --restart damaged-forged-size/checkpoint
+check "$dir/valid.prm"              1 "of 'damaged-forged-payload/checkpoint/state.bin' cannot be read" --restart damaged-forged-payload/checkpoint
+check_mpi "$dir/valid.prm"          1 "of 'damaged-forged-payload/checkpoint/state.bin' cannot be read" --restart damaged-forged-payload/checkpoint
+# A restart continues the checkpoint's discrete problem: a change of what
+# defines it is refused naming the entry (core/restart_check.h); load
+# curves, stepping, solver, output and checkpoint entries may change.
+check "$dir/valid.prm"              1 "Geometry/Global refinements: is '2' here but was '1' in the checkpoint's run; a restart continues the checkpoint's discrete problem" --set "Geometry/Global refinements=2" --restart cp/checkpoint
+check_mpi "$dir/valid.prm"          1 "Geometry/Global refinements: is '2' here but was '1' in the checkpoint's run" --set "Geometry/Global refinements=2" --restart cp/checkpoint
+check "$dir/valid.prm"              1 "Materials/Region 0/Wrinkling smoothing: is '1e-4' here but was" --set "Materials/Region 0/Wrinkling smoothing=1e-4" --restart cp/checkpoint
+check "$dir/valid.prm"              1 "Output/Monitor points: is '0,0,0' here but was '' in the checkpoint's run" --set "Output/Monitor points=0,0,0" --restart cp/checkpoint
+check "$dir/valid.prm"              0 "finished, " --set "Output/Directory=cp-changed" --set "Loads/Pressure/Function expression=50*t" --set "Load stepping/Minimum increment=1e-4" --set "Newton/Residual tolerance=1e-9" --set "Output/Write VTU=true" --set "Checkpoint/Interval steps=1" --restart cp/checkpoint
+NP=3 check_mpi "$dir/valid.prm"     1 "--restart nomesh/checkpoint: 'nomesh/checkpoint/membrane.mesh_fixed.data' is missing" --restart nomesh/checkpoint
 NP=3 check_mpi "$c"                 1 "walls face into the chamber" --set "Chambers/Chamber 1/Regions=-0, -1, -2"
 NP=3 check_mpi "$dir/valid.prm"     1 "Output/Directory: cannot write into" --set "Output/Directory=not_a_directory"
 # A rerun into the same directory leaves no file of the earlier run.

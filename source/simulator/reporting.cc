@@ -78,7 +78,7 @@ namespace pneuma
     TimerOutput::Scope ts(timer, "checkpoint");
     const auto        &strategy =
       *strategies.at(stages.strategy(stages.segments()[segment].first));
-    write_checkpoint(checkpoint_directory(), comm, [&](Checkpoint &cp) {
+    checkpoints.write(checkpoint_directory(), comm, [&](Checkpoint &cp) {
       // The state, then the vectors the strategy keeps (the static path's
       // last increment).
       std::vector<const solvers::BorderedVector *> states{&state};

@@ -1,4 +1,5 @@
 #include <pneuma/core/input_error.h>
+#include <pneuma/core/restart_check.h>
 
 #include "simulator_impl.h"
 
@@ -78,6 +79,7 @@ namespace pneuma
                 "0) cannot be restarted; run the cycles again instead");
     s.restart = std::make_unique<Checkpoint>(directory);
     s.restart->read_state(s.comm);
+    check_restart_parameters(*s.restart, s.checkpoints.parameters());
     s.model.set_restart_directory(directory);
   }
 

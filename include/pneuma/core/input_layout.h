@@ -79,6 +79,13 @@ namespace pneuma
           const std::string               &prefix,
           const std::vector<unsigned int> &fallback) const;
 
+    /// Every entry the input sets, "Path/To/Entry" -> its last value.
+    const std::map<std::string, std::string> &
+    entries() const
+    {
+      return values;
+    }
+
   private:
     bool template_mode = false;
     /// Subsection paths in first-seen order ("Cables/Cable 1").
