@@ -21,7 +21,8 @@ run() { # bin prm label k extra...
     "${old_geometry[@]}" "$@" > /dev/null
 }
 for k in $(seq "$RUNS"); do
-  run "$OLD_BIN" "$OLD_PRM" old "$k" --set "Geometry/Cells along length=9"
+  run "$OLD_BIN" "$OLD_PRM" old "$k" \
+    --set "Geometry/closed cylinder/Cells along length=9"
   run "$NEW_BIN" "$NEW_PRM" new "$k" \
     --set "Geometry/closed cylinder/Cells along length=9"
 done
