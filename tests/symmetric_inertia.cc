@@ -494,6 +494,9 @@ main(int argc, char **argv)
                     f3,
                     kind.c_str(),
                     pass ? "PASS" : "FAIL");
+      // The factors refer to A, which is destroyed first: release them
+      // while it lives (as Model::~Model does).
+      solver.reset();
     }
   return ok ? 0 : 1;
 }
