@@ -173,7 +173,8 @@ namespace pneuma
       }
     solver.set_constant_modes(translations);
     solver.set_symmetric_possible(symmetric_by_construction());
-    if (solver.type() == "amg" && Utilities::MPI::sum(rotation_norm, comm) > 0.)
+    if (solver.type() == solvers::LinearSolverType::amg
+        && Utilities::MPI::sum(rotation_norm, comm) > 0.)
       solver.set_rigid_body_modes(modes);
     solver.reset();
   }

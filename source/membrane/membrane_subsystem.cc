@@ -406,7 +406,7 @@ namespace pneuma
             for (unsigned int c = 0; c < 3; ++c)
               modes[c][k] = component_dofs[c].is_element(i) ? 1. : 0.;
         }
-      if (model.linear_solver().type() != "amg")
+      if (model.linear_solver().type() != solvers::LinearSolverType::amg)
         return;
       std::map<types::global_dof_index, Point<3>> support;
       const Point<3> centre = support_centroid(support);

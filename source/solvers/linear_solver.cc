@@ -2,6 +2,7 @@
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_solver.h>
 
+#include <pneuma/core/selection_parameter.h>
 #include <pneuma/solvers/linear_solver.h>
 #include <pneuma/solvers/stability.h>
 
@@ -23,18 +24,11 @@ namespace pneuma
   {
     namespace
     {
-      /// MUMPS' ICNTL(7) value of an "Ordering" entry.
-      int
-      icntl7(const std::string &ordering)
+      /// The Amesos name of a package.
+      const char *
+      amesos_name(const DirectPackage package)
       {
-        static const std::map<std::string, int> values = {{"amd", 0},
-                                                          {"amf", 2},
-                                                          {"scotch", 3},
-                                                          {"pord", 4},
-                                                          {"metis", 5},
-                                                          {"qamd", 6},
-                                                          {"auto", 7}};
-        return values.at(ordering);
+        return package == DirectPackage::mumps ? "Amesos_Mumps" : "Amesos_Klu";
       }
     } // namespace
 
@@ -42,22 +36,35 @@ namespace pneuma
     LinearSolver::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Linear solver");
-      prm.add_parameter("Type",
-                        solver_type,
-                        "direct: sparse LDL^T or LU (MUMPS; or KLU through "
-                        "Trilinos Amesos); amg: GMRES preconditioned by "
-                        "Trilinos ML "
-                        "algebraic multigrid. Each type's settings are in "
-                        "the subsection of its name.",
-                        Patterns::Selection("direct|amg"));
+      add_selection(prm,
+                    "Type",
+                    solver_type,
+                    {{"direct", LinearSolverType::direct},
+                     {"amg", LinearSolverType::amg}},
+                    "direct: sparse LDL^T or LU (MUMPS; or KLU through "
+                    "Trilinos Amesos); amg: GMRES preconditioned by "
+                    "Trilinos ML "
+                    "algebraic multigrid. Each type's settings are in "
+                    "the subsection of its name.");
       prm.enter_subsection("direct");
-      prm.add_parameter("Package",
-                        direct_settings.package,
-                        "Package of the direct solver.",
-                        Patterns::Selection("Amesos_Mumps|Amesos_Klu"));
-      prm.add_parameter(
+      add_selection(prm,
+                    "Package",
+                    direct_settings.package,
+                    {{"Amesos_Mumps", DirectPackage::mumps},
+                     {"Amesos_Klu", DirectPackage::klu}},
+                    "Package of the direct solver.");
+      // MUMPS' ICNTL(7) values.
+      add_selection<int>(
+        prm,
         "Ordering",
         direct_settings.ordering,
+        {{"metis", 5},
+         {"amd", 0},
+         {"amf", 2},
+         {"qamd", 6},
+         {"scotch", 3},
+         {"pord", 4},
+         {"auto", 7}},
         "Fill-reducing ordering of MUMPS (ICNTL(7)). amf (approximate "
         "minimum fill) has the cheapest analysis (benchmarks/"
         "inflated_cylinder/results.md); metis is METIS' nested dissection "
@@ -69,11 +76,14 @@ namespace pneuma
         "serves several Newton iterations (parameter_files/"
         "waterbeam_cables.prm). pord, scotch and auto are MUMPS' own "
         "(scotch and auto fall back to MUMPS' automatic choice where it "
-        "lacks them).",
-        Patterns::Selection("metis|amd|amf|qamd|scotch|pord|auto"));
-      prm.add_parameter(
+        "lacks them).");
+      add_selection(
+        prm,
         "Factorization",
         direct_settings.factorization,
+        {{"automatic", FactorizationChoice::automatic},
+         {"LDLT", FactorizationChoice::ldlt},
+         {"LU", FactorizationChoice::lu}},
         "MUMPS' factorization. LDLT: the symmetric indefinite LDL^T (half "
         "the factor entries and about 55 % of the work of LU; only the upper "
         "triangle is read, so the tangent must be symmetric); LU: the "
@@ -83,8 +93,7 @@ namespace pneuma
         "construction (a smoothed contact master normal, a slipping "
         "friction point in the assembly), else LDLT for "
         "every tangent whose measured asymmetry is below 1e-10, else LU. "
-        "With Package = Amesos_Klu always LU.",
-        Patterns::Selection("automatic|LDLT|LU"));
+        "With Package = Amesos_Klu always LU.");
       prm.add_parameter("Reuse factorization",
                         direct_settings.reuse_factorization,
                         "Solve later Newton systems by GMRES preconditioned "
@@ -160,10 +169,10 @@ namespace pneuma
     bool
     LinearSolver::choose_symmetric(const LA::SparseMatrix &A) const
     {
-      if (direct_settings.package != "Amesos_Mumps"
-          || direct_settings.factorization == "LU")
+      if (direct_settings.package != DirectPackage::mumps
+          || direct_settings.factorization == FactorizationChoice::lu)
         return false;
-      if (direct_settings.factorization == "LDLT")
+      if (direct_settings.factorization == FactorizationChoice::ldlt)
         return true;
       if (!symmetric_possible)
         return false;
@@ -178,7 +187,7 @@ namespace pneuma
         {
           symmetric =
             std::make_unique<SymmetricInertia>(A.get_mpi_communicator(), 0.);
-          symmetric->set_ordering(icntl7(direct_settings.ordering));
+          symmetric->set_ordering(direct_settings.ordering);
           symmetric->set_pivot_order(std::move(released_order));
           released_order = SymmetricInertia::PivotOrder();
         }
@@ -202,7 +211,7 @@ namespace pneuma
     double
     LinearSolver::factor_entries() const
     {
-      if (solver_type != "direct")
+      if (solver_type != LinearSolverType::direct)
         return 0.;
       if (use_symmetric && symmetric)
         return symmetric->factor_entries();
@@ -214,7 +223,7 @@ namespace pneuma
     double
     LinearSolver::factorization_flops() const
     {
-      if (solver_type != "direct")
+      if (solver_type != LinearSolverType::direct)
         return 0.;
       if (use_symmetric && symmetric)
         return symmetric->factorization_flops();
@@ -240,7 +249,7 @@ namespace pneuma
     void
     LinearSolver::factorize(const LA::SparseMatrix &A)
     {
-      if (solver_type == "direct")
+      if (solver_type == LinearSolverType::direct)
         {
           if (direct_settings.reuse_factorization && factorizations > 0
               && factored_matrix == &A.trilinos_matrix()
@@ -263,9 +272,10 @@ namespace pneuma
                 const_cast<Epetra_CrsMatrix *>(&A.trilinos_matrix()));
               Amesos factory;
               direct.reset(
-                factory.Create(direct_settings.package.c_str(), *problem));
+                factory.Create(amesos_name(direct_settings.package), *problem));
               AssertThrow(direct != nullptr,
-                          ExcMessage("Amesos solver " + direct_settings.package
+                          ExcMessage(std::string("Amesos solver ")
+                                     + amesos_name(direct_settings.package)
                                      + " is not available"));
               // Failures are reported by the caller, not printed by Amesos.
               Teuchos::ParameterList amesos_parameters;
@@ -273,7 +283,7 @@ namespace pneuma
               amesos_parameters.set("PrintStatus", false);
               direct->SetParameters(amesos_parameters);
               if (auto *mumps = dynamic_cast<Amesos_Mumps *>(direct.get()))
-                mumps->SetICNTL(7, icntl7(direct_settings.ordering));
+                mumps->SetICNTL(7, direct_settings.ordering);
               AssertThrow(direct->SymbolicFactorization() == 0,
                           ExcMessage("symbolic factorization failed"));
               factored_matrix = &A.trilinos_matrix();
@@ -362,7 +372,8 @@ namespace pneuma
                         const std::vector<const LA::Vector *> &b)
     {
       AssertDimension(x.size(), b.size());
-      if (solver_type == "direct" && !stale && use_symmetric && symmetric)
+      if (solver_type == LinearSolverType::direct && !stale && use_symmetric
+          && symmetric)
         {
           symmetric->solve(b, x);
           return 0;
@@ -378,7 +389,7 @@ namespace pneuma
                         LA::Vector             &x,
                         const LA::Vector       &b)
     {
-      if (solver_type == "direct")
+      if (solver_type == LinearSolverType::direct)
         {
           Assert(direct, ExcMessage("factorize() first"));
           if (stale)

@@ -11,12 +11,12 @@ namespace pneuma
       constexpr unsigned int counts = Statistics::summary;
       row.add_count(run, "factorizations", n_factorizations(), counts);
       row.add_count(run, "krylov_iterations", n_krylov_iterations(), counts);
-      if (type() != "direct")
+      if (type() != LinearSolverType::direct)
         return;
       // The last factorization: LDL^T (1) or LU (0), its size and work.
       row.add_count(run,
                     "factorization_symmetric",
-                    factorization() == "LDLT" ? 1. : 0.,
+                    factorized_ldlt() ? 1. : 0.,
                     counts);
       row.add_count(run, "factor_entries", factor_entries(), counts);
       row.add(

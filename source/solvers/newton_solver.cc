@@ -308,7 +308,7 @@ namespace pneuma
     {
       if (!std::isfinite(state.r_norm))
         {
-          result.failure_reason = "residual is not finite";
+          result.fail(NewtonFailure::not_finite, "residual is not finite");
           return Outcome::failed;
         }
       // A state that meets the tolerance at once (a stage whose loads no
@@ -320,14 +320,15 @@ namespace pneuma
         }
       if (problem.interrupted())
         {
-          result.failure_reason = "interrupted";
+          result.fail(NewtonFailure::interrupted, "interrupted");
           return Outcome::failed;
         }
       if (it >= state.phase.max_iterations)
         {
-          result.failure_reason = "no convergence in "
-                                  + std::to_string(state.phase.max_iterations)
-                                  + " iterations";
+          result.fail(NewtonFailure::no_convergence,
+                      "no convergence in "
+                        + std::to_string(state.phase.max_iterations)
+                        + " iterations");
           return Outcome::failed;
         }
       return Outcome::go_on;
@@ -367,7 +368,8 @@ namespace pneuma
           text = std::regex_replace(text, std::regex("-{3,}"), " ");
           const std::string message =
             Utilities::trim(std::regex_replace(text, std::regex("\\s+"), " "));
-          result.failure_reason = "linear solver failed: " + message;
+          result.fail(NewtonFailure::linear_solver,
+                      "linear solver failed: " + message);
           if (print_table)
             out << "    (linear solver: " << message << ")\n";
           return Outcome::failed;
@@ -376,7 +378,7 @@ namespace pneuma
       state.du_norm = state.du.l2_norm();
       if (!std::isfinite(state.du_norm))
         {
-          result.failure_reason = "linear solver failed";
+          result.fail(NewtonFailure::linear_solver, "linear solver failed");
           return Outcome::failed;
         }
       if (state.pure && state.du_norm <= update_tolerance * u.l2_norm()
@@ -548,7 +550,7 @@ namespace pneuma
                   result.convergence_test = "no descent at the round-off floor";
                   return true;
                 }
-              result.failure_reason = "line search failed";
+              result.fail(NewtonFailure::line_search, "line search failed");
               return false;
             }
           // 4. Update, or back to the watchdog's saved state.
@@ -599,7 +601,7 @@ namespace pneuma
           phase.shift *= S::shrink;
         }
       result.residual_history.assign(1, r.l2_norm());
-      result.failure_reason.clear();
+      result.fail(NewtonFailure::none, "");
       result.convergence_test.clear();
       return fresh;
     }

@@ -43,6 +43,33 @@ namespace pneuma
   {
     using namespace dealii;
 
+    /// Entry "Linear solver/Type".
+    enum class LinearSolverType
+    {
+      /// Sparse LDL^T or LU (MUMPS, or KLU).
+      direct,
+      /// GMRES with Trilinos ML algebraic multigrid.
+      amg
+    };
+
+    /// Entry "Linear solver/direct/Package".
+    enum class DirectPackage
+    {
+      /// Amesos_Mumps.
+      mumps,
+      /// Amesos_Klu.
+      klu
+    };
+
+    /// Entry "Linear solver/direct/Factorization".
+    enum class FactorizationChoice
+    {
+      /// LU where a tangent is not symmetric, else LDL^T.
+      automatic,
+      ldlt,
+      lu
+    };
+
     /// "Linear solver" subsection and the solve itself.
     class LinearSolver
     {
@@ -122,19 +149,27 @@ namespace pneuma
         forcing = eta;
       }
 
-      /// "direct" or "amg".
-      const std::string &
+      /// Entry "Type".
+      LinearSolverType
       type() const
       {
         return solver_type;
       }
 
-      /// The factorization of the last factorize(): "LDLT", "LU" or ""
-      /// (none yet, or AMG).
+      /// Is the last factorize()'s factorization an LDL^T?
+      bool
+      factorized_ldlt() const
+      {
+        return solver_type == LinearSolverType::direct && factorizations > 0
+               && use_symmetric;
+      }
+
+      /// The name of the last factorize()'s factorization for logs:
+      /// "LDLT", "LU" or "" (none yet, or AMG).
       std::string
       factorization() const
       {
-        if (solver_type != "direct" || factorizations == 0)
+        if (solver_type != LinearSolverType::direct || factorizations == 0)
           return "";
         return use_symmetric ? "LDLT" : "LU";
       }
@@ -144,7 +179,8 @@ namespace pneuma
       bool
       inertia(Inertia &result) const
       {
-        if (solver_type != "direct" || !use_symmetric || !symmetric || stale)
+        if (solver_type != LinearSolverType::direct || !use_symmetric
+            || !symmetric || stale)
           return false;
         result = symmetric->last();
         return true;
@@ -193,17 +229,18 @@ namespace pneuma
       add_statistics(Statistics &row) const;
 
     private:
-      /// Entry "Type": "direct" or "amg".
-      std::string solver_type = "direct";
+      /// Entry "Type".
+      LinearSolverType solver_type = LinearSolverType::direct;
       /// The entries of "Linear solver/direct".
       struct DirectSettings
       {
         /// "Package": the Amesos solver.
-        std::string package = "Amesos_Mumps";
-        /// "Factorization": automatic, LDLT or LU.
-        std::string factorization = "automatic";
-        /// "Ordering": MUMPS's fill-reducing ordering, ICNTL(7).
-        std::string ordering = "amf";
+        DirectPackage package = DirectPackage::mumps;
+        /// "Factorization".
+        FactorizationChoice factorization = FactorizationChoice::automatic;
+        /// "Ordering": MUMPS's fill-reducing ordering, its ICNTL(7) value
+        /// (2: amf).
+        int ordering = 2;
         /// "Reuse factorization", "Reuse iterations", "Reuse tolerance":
         /// factorize() keeps the numeric factors of an earlier tangent and
         /// solve() runs GMRES on the current one, preconditioned by them;

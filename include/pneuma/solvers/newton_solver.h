@@ -122,6 +122,28 @@ namespace pneuma
       }
     };
 
+    /// Why a Newton solve, or the step around it, failed.
+    enum class NewtonFailure
+    {
+      none,
+      /// The residual is NaN or inf.
+      not_finite,
+      /// SIGINT or SIGTERM.
+      interrupted,
+      /// The iteration limit.
+      no_convergence,
+      /// The factorization or the solve failed.
+      linear_solver,
+      /// No step length reduced the merit function.
+      line_search,
+      /// Converged, but a subsystem rejects the state (check_state()).
+      state_rejected,
+      /// Converged, but back along the path (arc length).
+      turned_back,
+      /// The step cannot begin (begin_step(): e.g. a chamber drained).
+      impossible_step
+    };
+
     /// Convergence history of one Newton solve.
     struct NewtonResult
     {
@@ -129,7 +151,18 @@ namespace pneuma
       unsigned int iterations = 0;
       /// |r| after each accepted iteration of the final pure Newton phase.
       std::vector<double> residual_history;
-      std::string         failure_reason;
+      /// Why it failed (NewtonFailure::none if it did not), and the
+      /// reason in words with its numbers, for the log.
+      NewtonFailure failure = NewtonFailure::none;
+      std::string   failure_reason;
+
+      /// Record a failure.
+      void
+      fail(const NewtonFailure why, const std::string &reason)
+      {
+        failure        = why;
+        failure_reason = reason;
+      }
       /// The test that declared convergence (empty if none did).
       std::string convergence_test;
       /// |r_ref|, the scale of the residual tolerance.

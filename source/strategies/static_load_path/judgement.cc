@@ -39,8 +39,8 @@ namespace pneuma
           const std::string reason = walk.model.check_state(walk.result.state);
           if (!reason.empty())
             {
-              a.newton.converged      = false;
-              a.newton.failure_reason = reason;
+              a.newton.converged = false;
+              a.newton.fail(solvers::NewtonFailure::state_rejected, reason);
             }
         }
       if (a.newton.converged && a.path_step
@@ -63,7 +63,8 @@ namespace pneuma
           return Verdict::again;
         }
       // A signal inside Newton: the loop stops at its top.
-      if (!a.newton.converged && a.newton.failure_reason == "interrupted")
+      if (!a.newton.converged
+          && a.newton.failure == solvers::NewtonFailure::interrupted)
         {
           again(walk, a);
           return Verdict::again;
@@ -88,8 +89,9 @@ namespace pneuma
                                 step_increment, current.increment_dt))
                < 0.)
         {
-          a.newton.converged      = false;
-          a.newton.failure_reason = "the step turned back along the path";
+          a.newton.converged = false;
+          a.newton.fail(solvers::NewtonFailure::turned_back,
+                        "the step turned back along the path");
         }
       else if (a.t_new > stages.end(a.stage) + 1e-12 * stages.end_time())
         {

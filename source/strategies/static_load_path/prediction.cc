@@ -185,8 +185,8 @@ namespace pneuma
       const std::string impossible = walk.model.begin_step(a.t_new, state);
       if (!impossible.empty())
         {
-          a.newton.converged      = false;
-          a.newton.failure_reason = impossible;
+          a.newton.converged = false;
+          a.newton.fail(solvers::NewtonFailure::impossible_step, impossible);
           return;
         }
       // The bordered system.
