@@ -1169,6 +1169,10 @@ namespace pneuma
           const std::string name =
             series.file_name(step, k, bodies.size()) + ".vtu";
           std::ofstream file(directory + "/" + name);
+          // No date and time in the file: a run repeated is byte-identical.
+          DataOutBase::VtkFlags flags;
+          flags.print_date_and_time = false;
+          data_out.set_flags(flags);
           data_out.write_vtu(file);
           series.add(step, t, name, k);
         }

@@ -1,12 +1,14 @@
 #include <deal.II/base/quadrature_lib.h>
-#include <deal.II/distributed/grid_refinement.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/error_estimator.h>
 
 #include <pneuma/geometry/adaptive_refinement.h>
 #include <pneuma/geometry/junctions.h>
 
+#include <algorithm>
 #include <array>
+#include <functional>
+#include <limits>
 #include <vector>
 
 namespace pneuma
@@ -16,6 +18,53 @@ namespace pneuma
     namespace
     {
       using Tria = parallel::distributed::Triangulation<2, 3>;
+
+      /**
+       * Indicators within this fraction of the refinement (coarsening)
+       * threshold count as equal to it, and are refined (coarsened) with
+       * it. Kelly's indicator is a float computed from the converged
+       * displacement: cells that a symmetry makes equal (the waterbeam's
+       * mirror halves) differ by the round-off of the solve, which another
+       * BLAS kernel or thread count changes, or are equal floats on one
+       * machine and a few units in the last place apart on another. Ranked
+       * by deal.II's bisection for the threshold, which cannot split such a
+       * pair, one CPU refined one cell of it and another both (4536 or
+       * 4548 cells in tests/waterbeam_junctions). The band is 150 float
+       * units in the last place wide, far above that round-off, and far
+       * below the accuracy of any error estimate: the nearest indicator
+       * that is not tied lay 2.3e-4 (relative) from the threshold in every
+       * cycle of that test. A cell's value must now lie within round-off
+       * of the band's edge, not of the threshold, for the decision to
+       * depend on the machine.
+       */
+      constexpr double tie_band = 1e-5;
+
+      /**
+       * The value of rank @p k (from 0) of the indicators @p mine of all
+       * ranks, sorted by @p before (std::greater: from the largest). Exact:
+       * the values are gathered on rank 0, so the same indicators give the
+       * same threshold on any number of ranks.
+       */
+      template <typename Order>
+      double
+      nth_indicator(const std::vector<float> &mine,
+                    const std::size_t         k,
+                    const Order              &before,
+                    const MPI_Comm            comm)
+      {
+        const auto parts = Utilities::MPI::gather(comm, mine, 0);
+        double     value = 0.;
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
+          {
+            std::vector<float> all;
+            for (const auto &part : parts)
+              all.insert(all.end(), part.begin(), part.end());
+            AssertIndexRange(k, all.size());
+            std::nth_element(all.begin(), all.begin() + k, all.end(), before);
+            value = all[k];
+          }
+        return Utilities::MPI::broadcast(comm, value, 0);
+      }
 
       /// The junction edges of the locally owned active cells: the cell and
       /// the edge's two vertices.
@@ -113,6 +162,52 @@ namespace pneuma
     }
 
     void
+    AdaptiveRefinement::mark_fixed_number(
+      const Vector<float>                        &indicators,
+      parallel::distributed::Triangulation<2, 3> &triangulation) const
+    {
+      const MPI_Comm     comm = triangulation.get_communicator();
+      std::vector<float> mine;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->is_locally_owned())
+          mine.push_back(indicators[cell->active_cell_index()]);
+      const auto n_cells = triangulation.n_global_active_cells();
+      // The numbers of cells as deal.II's refine_and_coarsen_fixed_number
+      // counts them.
+      const auto n_refine = static_cast<types::global_cell_index>(
+        refine_fraction * static_cast<double>(n_cells));
+      const auto n_coarsen = static_cast<types::global_cell_index>(
+        coarsen_fraction * static_cast<double>(n_cells));
+      // The n_refine-th largest indicator; a cell at most tie_band below it
+      // is refined too. A threshold of 0 (fewer nonzero indicators than
+      // cells to refine) refines the nonzero ones.
+      double refine_above = std::numeric_limits<double>::infinity();
+      if (n_refine > 0)
+        {
+          const double t =
+            nth_indicator(mine, n_refine - 1, std::greater<float>(), comm);
+          refine_above =
+            t > 0. ? (1. - tie_band) * t : std::numeric_limits<double>::min();
+        }
+      // The n_coarsen-th smallest; a cell at most tie_band above it is
+      // coarsened too (unless it is to be refined).
+      double coarsen_below = -1.;
+      if (n_coarsen > 0)
+        coarsen_below =
+          (1. + tie_band)
+          * nth_indicator(mine, n_coarsen - 1, std::less<float>(), comm);
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const double eta = indicators[cell->active_cell_index()];
+            if (eta >= refine_above)
+              cell->set_refine_flag();
+            else if (eta <= coarsen_below)
+              cell->set_coarsen_flag();
+          }
+    }
+
+    void
     AdaptiveRefinement::refine(
       const Mapping<2, 3>                        &mapping,
       const DoFHandler<2, 3>                     &dof_handler,
@@ -127,10 +222,9 @@ namespace pneuma
                                           {},
                                           displacement,
                                           indicators);
-      parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
-        triangulation, indicators, refine_fraction, coarsen_fraction);
-      const MPI_Comm comm     = triangulation.get_communicator();
-      auto           junction = owned_junction_edges(triangulation);
+      const MPI_Comm comm = triangulation.get_communicator();
+      mark_fixed_number(indicators, triangulation);
+      auto junction = owned_junction_edges(triangulation);
       if (Utilities::MPI::sum(junction.size(), comm) == 0)
         {
           triangulation.execute_coarsening_and_refinement();

@@ -18,6 +18,7 @@
 #include <pneuma/core/input_error.h>
 #include <pneuma/core/input_layout.h>
 #include <pneuma/core/model.h>
+#include <pneuma/core/reproducible_output.h>
 #include <pneuma/core/share_constraints.h>
 #include <pneuma/membrane/face_assembly.h>
 #include <pneuma/membrane/form_finding_law.h>
@@ -141,13 +142,19 @@ namespace pneuma
       output->build_patches(*mapping_cache,
                             fe_degree,
                             DataOut<2, 3>::curved_inner_cells);
-      series.add(step,
-                 t,
-                 output->write_vtu_with_pvtu_record(
-                   directory + "/", series.name(), step, comm, 4));
+      // No date and time in the files: a run repeated is byte-identical.
+      DataOutBase::VtkFlags flags;
+      flags.print_date_and_time = false;
+      output->set_flags(flags);
+      const std::string pvtu = output->write_vtu_with_pvtu_record(
+        directory + "/", series.name(), step, comm, 4);
+      series.add(step, t, pvtu);
       if (Utilities::MPI::this_mpi_process(comm) == 0)
-        AssertThrow(series.write_pvd(directory),
-                    ExcMessage("cannot write " + series.name() + ".pvd"));
+        {
+          remove_date(directory + "/" + pvtu);
+          AssertThrow(series.write_pvd(directory),
+                      ExcMessage("cannot write " + series.name() + ".pvd"));
+        }
       output.reset();
     }
   } // namespace membrane

@@ -94,6 +94,16 @@ namespace pneuma
         "friction point in the assembly), else LDLT for "
         "every tangent whose measured asymmetry is below 1e-10, else LU. "
         "With Package = Amesos_Klu always LU.");
+      prm.add_parameter(
+        "Distributed factorization",
+        direct_settings.distributed,
+        "false (default): on several MPI ranks the matrix is gathered to "
+        "rank 0, which factorizes and solves it alone with MUMPS, so that "
+        "the same input on the same ranks and threads gives the same bits "
+        "in every run. true: MUMPS factorizes across all ranks, faster on "
+        "many ranks, but its asynchronous scheduling sums contributions "
+        "in the order they arrive, and the last digits of the results "
+        "vary from run to run. No effect on 1 rank.");
       prm.add_parameter("Reuse factorization",
                         direct_settings.reuse_factorization,
                         "Solve later Newton systems by GMRES preconditioned "
@@ -128,7 +138,10 @@ namespace pneuma
     void
     LinearSolver::parse_parameters(ParameterHandler &)
     {
-      // Every entry is bound by declare_parameters().
+      // Every entry is bound by declare_parameters(); the factorization
+      // mode also serves the stability count and the eigen analyses.
+      SymmetricInertia::set_distributed_factorization(
+        direct_settings.distributed);
     }
 
     LinearSolver::LinearSolver()  = default;
@@ -142,6 +155,7 @@ namespace pneuma
       amg.reset();
       release_symmetric();
       use_symmetric   = false;
+      symmetric_ldlt  = true;
       factored_matrix = nullptr;
       stale           = false;
     }
@@ -181,12 +195,18 @@ namespace pneuma
     }
 
     void
-    LinearSolver::symmetric_factorization(const LA::SparseMatrix &A)
+    LinearSolver::symmetric_factorization(const LA::SparseMatrix &A,
+                                          const bool              ldlt)
     {
+      if (symmetric && ldlt != symmetric_ldlt)
+        release_symmetric();
+      symmetric_ldlt = ldlt;
       if (!symmetric)
         {
           symmetric =
-            std::make_unique<SymmetricInertia>(A.get_mpi_communicator(), 0.);
+            std::make_unique<SymmetricInertia>(A.get_mpi_communicator(),
+                                               0.,
+                                               ldlt);
           symmetric->set_ordering(direct_settings.ordering);
           symmetric->set_pivot_order(std::move(released_order));
           released_order = SymmetricInertia::PivotOrder();
@@ -261,7 +281,20 @@ namespace pneuma
           if (choose_symmetric(A))
             {
               factored_matrix = &A.trilinos_matrix();
-              symmetric_factorization(A);
+              symmetric_factorization(A, true);
+              return;
+            }
+          // The LU on several ranks: Amesos_Mumps would factorize across
+          // them (not reproducible, symmetric_inertia.h); MUMPS' LU on
+          // rank 0 through the same interface instead.
+          if (direct_settings.package == DirectPackage::mumps
+              && !direct_settings.distributed
+              && dealii::Utilities::MPI::n_mpi_processes(
+                   A.get_mpi_communicator())
+                   > 1)
+            {
+              factored_matrix = &A.trilinos_matrix();
+              symmetric_factorization(A, false);
               return;
             }
           use_symmetric = false;
@@ -427,7 +460,7 @@ namespace pneuma
                   // The tangent has moved too far: factorize it (LDL^T
                   // or LU, as the earlier factors were).
                   if (use_symmetric)
-                    symmetric_factorization(A);
+                    symmetric_factorization(A, symmetric_ldlt);
                   else
                     numeric_factorization();
                 }

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -19,22 +20,137 @@ namespace pneuma
 {
   namespace solvers
   {
+    namespace
+    {
+      /// Whether MUMPS factorizes on all ranks (Linear solver/direct/
+      /// Distributed factorization); see SymmetricInertia::
+      /// set_distributed_factorization().
+      bool distributed_default = false;
+
+      /**
+       * Wait for @p request without spinning: the ranks that wait while
+       * rank 0 factorizes sleep between tests, so that they leave the
+       * cores to its BLAS threads (Open MPI's blocking calls poll at full
+       * speed).
+       */
+      void
+      wait_idle(MPI_Request &request)
+      {
+        int done = 0;
+        MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+        while (!done)
+          {
+            std::this_thread::sleep_for(std::chrono::microseconds(100));
+            MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+          }
+      }
+    } // namespace
+
+    void
+    SymmetricInertia::set_distributed_factorization(const bool distributed)
+    {
+      distributed_default = distributed;
+    }
+
+    bool
+    SymmetricInertia::distributed_factorization()
+    {
+      return distributed_default;
+    }
+
     struct SymmetricInertia::Data
     {
       DMUMPS_STRUC_C id;
-      bool           initialized = false, analysed = false;
-      // The triplets of the last analysis (1-based; MUMPS keeps pointers).
+      /// All ranks of the matrix, and MUMPS' own: the same, or in the
+      /// central mode rank 0 alone (MPI_COMM_SELF there; the other ranks
+      /// have no MUMPS instance and pass their triplets and right-hand
+      /// sides to rank 0).
+      MPI_Comm comm        = MPI_COMM_NULL;
+      bool     central     = false;
+      bool     initialized = false, analysed = false;
+      // The triplets of the last analysis (1-based; MUMPS keeps pointers):
+      // this rank's owned rows first (n_own of them), then, on rank 0 in
+      // the central mode, those of the other ranks in rank order.
       std::vector<MUMPS_INT> rows, columns;
       std::vector<double>    values;
-      MUMPS_INT8             n = 0;
-      Work                   work;
-      PivotOrder             order;
+      std::size_t            n_own = 0;
+      /// The other ranks' numbers of triplets and their offsets in the
+      /// arrays of rank 0 (central mode).
+      std::vector<int> counts, offsets;
+      MUMPS_INT8       n = 0;
+      Work             work;
+      PivotOrder       order;
 
+      /// This rank calls MUMPS.
+      bool
+      runs_mumps() const
+      {
+        return !central || dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+      }
+
+      /// Rank 0 collects the other ranks' triplets behind its own
+      /// (central mode): the values only if @p values_only (the pattern
+      /// is the analysed one), else the indices too.
+      void
+      gather_triplets(const bool values_only)
+      {
+        if (!central)
+          return;
+        const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+        const unsigned int n_ranks =
+          dealii::Utilities::MPI::n_mpi_processes(comm);
+        const int mine = static_cast<int>(n_own);
+        if (!values_only)
+          {
+            counts.assign(root ? n_ranks : 0, 0);
+            MPI_Gather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
+            offsets.assign(counts.size(), 0);
+            for (unsigned int r = 1; r < counts.size(); ++r)
+              offsets[r] = offsets[r - 1] + counts[r - 1];
+            if (root)
+              {
+                const std::size_t total = offsets.back() + counts.back();
+                rows.resize(total);
+                columns.resize(total);
+                values.resize(total);
+              }
+          }
+        const auto gather = [&](auto *data, const MPI_Datatype type) {
+          MPI_Gatherv(root ? MPI_IN_PLACE : data,
+                      mine,
+                      type,
+                      data,
+                      counts.data(),
+                      offsets.data(),
+                      type,
+                      0,
+                      comm);
+        };
+        if (!values_only)
+          {
+            gather(rows.data(), MPI_INT);
+            gather(columns.data(), MPI_INT);
+          }
+        gather(values.data(), MPI_DOUBLE);
+      }
+
+      /// Rank 0's MUMPS call and what the others read of it: the status
+      /// (an error is thrown on every rank), the inertia, the sizes and
+      /// flops (central mode).
       void
       call(const int job)
       {
-        const auto start = std::chrono::steady_clock::now();
-        timed_call(job);
+        const auto  start = std::chrono::steady_clock::now();
+        std::string error;
+        if (runs_mumps())
+          try
+            {
+              timed_call(job);
+            }
+          catch (const std::runtime_error &e)
+            {
+              error = e.what();
+            }
         const double seconds = std::chrono::duration<double>(
                                  std::chrono::steady_clock::now() - start)
                                  .count();
@@ -47,6 +163,31 @@ namespace pneuma
           work.factorization_seconds += seconds;
         else if (job == 3)
           work.solve_seconds += seconds;
+        if (central)
+          {
+            double      status[8] = {static_cast<double>(id.infog[0]),
+                                     static_cast<double>(id.infog[1]),
+                                     static_cast<double>(id.infog[11]),
+                                     static_cast<double>(id.infog[27]),
+                                     static_cast<double>(id.infog[28]),
+                                     id.rinfog[0],
+                                     id.rinfog[2],
+                                error.empty() ? 0. : 1.};
+            MPI_Request request;
+            MPI_Ibcast(status, 8, MPI_DOUBLE, 0, comm, &request);
+            wait_idle(request);
+            id.infog[0]  = static_cast<MUMPS_INT>(status[0]);
+            id.infog[1]  = static_cast<MUMPS_INT>(status[1]);
+            id.infog[11] = static_cast<MUMPS_INT>(status[2]);
+            id.infog[27] = static_cast<MUMPS_INT>(status[3]);
+            id.infog[28] = static_cast<MUMPS_INT>(status[4]);
+            id.rinfog[0] = status[5];
+            id.rinfog[2] = status[6];
+            if (status[7] != 0.)
+              error = dealii::Utilities::MPI::broadcast(comm, error, 0);
+          }
+        if (!error.empty())
+          throw std::runtime_error(error);
       }
 
       void
@@ -83,7 +224,6 @@ namespace pneuma
       void
       analyse()
       {
-        const MPI_Comm comm = MPI_Comm_f2c(id.comm_fortran);
         const bool host = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
         static_assert(std::is_same_v<MUMPS_INT, int>,
                       "PivotOrder holds MUMPS_INT as int");
@@ -113,9 +253,9 @@ namespace pneuma
             std::vector<int> position =
               nested_dissection(comm,
                                 id.n,
-                                id.irn_loc,
-                                id.jcn_loc,
-                                static_cast<std::size_t>(id.nnz_loc),
+                                rows.data(),
+                                columns.data(),
+                                n_own,
                                 id.n % 3 == 0 ? 3 : 1);
             work.analysis_seconds += std::chrono::duration<double>(
                                        std::chrono::steady_clock::now() - start)
@@ -184,16 +324,24 @@ namespace pneuma
     {
       DMUMPS_STRUC_C &id = data->id;
       id                 = DMUMPS_STRUC_C();
-      id.comm_fortran    = static_cast<MUMPS_INT>(MPI_Comm_c2f(comm));
-      id.par             = 1; // the host works too
+      data->comm         = comm;
+      data->central      = !distributed_default
+                      && dealii::Utilities::MPI::n_mpi_processes(comm) > 1;
+      id.comm_fortran = static_cast<MUMPS_INT>(
+        MPI_Comm_c2f(data->central ? MPI_COMM_SELF : comm));
+      id.par = 1; // the host works too
       // General symmetric: LDL^T with 2x2 pivots; or LU.
       id.sym = symmetric ? 2 : 0;
-      data->call(-1);
-      data->initialized = true;
-      id.icntl[0]       = -1; // no error, diagnostic or global output
-      id.icntl[1]       = -1;
-      id.icntl[2]       = -1;
-      id.icntl[3]       = 0;
+      if (data->runs_mumps())
+        {
+          id.job = -1;
+          dmumps_c(&id);
+          data->initialized = true;
+        }
+      id.icntl[0] = -1; // no error, diagnostic or global output
+      id.icntl[1] = -1;
+      id.icntl[2] = -1;
+      id.icntl[3] = 0;
       // ICNTL(13) = 1: no ScaLAPACK root, whose pivots INFOG(12) would not
       // count in parallel (Newton's factorizations give the stability
       // count too).
@@ -258,8 +406,8 @@ namespace pneuma
       };
       std::size_t count = 0;
       for_each_entry([&](MUMPS_INT, MUMPS_INT, double) { ++count; });
-      bool same_pattern = d.analysed && d.n == static_cast<MUMPS_INT8>(A.m())
-                          && count == d.rows.size();
+      bool same_pattern =
+        d.analysed && d.n == static_cast<MUMPS_INT8>(A.m()) && count == d.n_own;
       if (same_pattern)
         {
           std::size_t k = 0;
@@ -291,18 +439,14 @@ namespace pneuma
             d.values.push_back(v);
           });
         }
-      id.a_loc = d.values.data();
+      d.n_own = count;
       // MUMPS needs the same JOB on every rank: a pattern that changed on
       // one rank only (contact adding entries to its rows) is a new
       // analysis everywhere.
-      int same_everywhere = same_pattern ? 1 : 0;
-      MPI_Allreduce(MPI_IN_PLACE,
-                    &same_everywhere,
-                    1,
-                    MPI_INT,
-                    MPI_MIN,
-                    MPI_Comm_f2c(id.comm_fortran));
-      same_pattern = same_everywhere == 1;
+      same_pattern =
+        dealii::Utilities::MPI::min(same_pattern ? 1 : 0, d.comm) == 1;
+      d.gather_triplets(same_pattern);
+      id.a_loc = d.values.data();
       if (!same_pattern)
         {
           d.n        = A.m();
@@ -332,14 +476,14 @@ namespace pneuma
       last_inertia    = result;
       return result;
     }
+
     void
     SymmetricInertia::solve(const std::vector<dealii::Vector<double>> &b,
                             std::vector<dealii::Vector<double>>       &x)
     {
-      Data           &d    = *data;
-      DMUMPS_STRUC_C &id   = d.id;
-      const MPI_Comm  comm = MPI_Comm_f2c(id.comm_fortran);
-      const bool host = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+      Data          &d    = *data;
+      const MPI_Comm comm = d.comm;
+      const bool     host = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
       x.resize(b.size());
       if (b.empty())
         return;
@@ -366,16 +510,12 @@ namespace pneuma
     SymmetricInertia::solve(const dealii::Vector<double> &b,
                             dealii::Vector<double>       &x)
     {
-      Data           &d  = *data;
-      DMUMPS_STRUC_C &id = d.id;
-      const bool      host =
-        dealii::Utilities::MPI::this_mpi_process(MPI_Comm_f2c(id.comm_fortran))
-        == 0;
+      Data      &d    = *data;
+      const bool host = dealii::Utilities::MPI::this_mpi_process(d.comm) == 0;
       // Solved on the host, then shared.
       x = b;
       d.solve_on_host(host ? x.data() : nullptr, x.size(), 1);
-      x =
-        dealii::Utilities::MPI::broadcast(MPI_Comm_f2c(id.comm_fortran), x, 0);
+      x = dealii::Utilities::MPI::broadcast(d.comm, x, 0);
     }
 
     void
@@ -392,8 +532,7 @@ namespace pneuma
       if (b.empty())
         return;
       Data              &d    = *data;
-      DMUMPS_STRUC_C    &id   = d.id;
-      const MPI_Comm     comm = MPI_Comm_f2c(id.comm_fortran);
+      const MPI_Comm     comm = d.comm;
       const unsigned int n_ranks =
         dealii::Utilities::MPI::n_mpi_processes(comm);
       const bool host     = dealii::Utilities::MPI::this_mpi_process(comm) == 0;

@@ -15,6 +15,7 @@
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
+#include <deal.II/lac/vector.h>
 
 #include <pneuma/core/linear_algebra.h>
 
@@ -45,7 +46,8 @@ namespace pneuma
       /**
        * Mark the cells by Kelly's indicator of the displacement
        * @p displacement (ghosted) and refine (and coarsen) the fixed
-       * fractions of them.
+       * fractions of them; cells whose indicators are equal to the
+       * threshold's up to 1e-5 are refined alike (mark_fixed_number()).
        *
        * On a mesh with junction lines (geometry/junctions.h) every copy of
        * a junction edge is refined alike, so that the new vertices on it
@@ -63,6 +65,20 @@ namespace pneuma
              parallel::distributed::Triangulation<2, 3> &triangulation) const;
 
     private:
+      /**
+       * Flag the locally owned cells by the fixed numbers of the fractions:
+       * the cells with the largest (smallest) @p indicators, and with them
+       * every cell whose indicator is within a relative 1e-5 of the last
+       * one taken (doc/theory.md §4.2), so that cells that are equal up to
+       * round-off are refined alike on every machine and thread count.
+       * The thresholds are exact order statistics of the indicators of all
+       * ranks.
+       */
+      void
+      mark_fixed_number(
+        const Vector<float>                        &indicators,
+        parallel::distributed::Triangulation<2, 3> &triangulation) const;
+
       /// Entries "Cycles", "Refine fraction", "Coarsen fraction".
       unsigned int n_cycles         = 0;
       double       refine_fraction  = 0.3;

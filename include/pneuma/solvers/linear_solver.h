@@ -161,7 +161,7 @@ namespace pneuma
       factorized_ldlt() const
       {
         return solver_type == LinearSolverType::direct && factorizations > 0
-               && use_symmetric;
+               && use_symmetric && symmetric_ldlt;
       }
 
       /// The name of the last factorize()'s factorization for logs:
@@ -171,7 +171,7 @@ namespace pneuma
       {
         if (solver_type != LinearSolverType::direct || factorizations == 0)
           return "";
-        return use_symmetric ? "LDLT" : "LU";
+        return factorized_ldlt() ? "LDLT" : "LU";
       }
 
       /// The inertia of the current factorization if it is an LDL^T of
@@ -180,7 +180,7 @@ namespace pneuma
       inertia(Inertia &result) const
       {
         if (solver_type != LinearSolverType::direct || !use_symmetric
-            || !symmetric || stale)
+            || !symmetric_ldlt || !symmetric || stale)
           return false;
         result = symmetric->last();
         return true;
@@ -246,9 +246,13 @@ namespace pneuma
         /// solve() runs GMRES on the current one, preconditioned by them;
         /// when GMRES needs more than reuse_iterations the tangent has
         /// moved too far and is factorized afresh.
-        bool         reuse_factorization = false;
-        unsigned int reuse_iterations    = 8;
-        double       reuse_tolerance     = 1e-9;
+        bool reuse_factorization = false;
+        /// "Distributed factorization": MUMPS on all ranks (not
+        /// reproducible in the last digits) instead of on rank 0
+        /// (symmetric_inertia.h).
+        bool         distributed      = false;
+        unsigned int reuse_iterations = 8;
+        double       reuse_tolerance  = 1e-9;
       } direct_settings;
       /// The entries of "Linear solver/amg": GMRES's relative tolerance
       /// and iteration limit.
@@ -269,9 +273,12 @@ namespace pneuma
       std::unique_ptr<Epetra_LinearProblem> problem;
       std::unique_ptr<Amesos_BaseSolver>    direct;
       const void                           *factored_matrix = nullptr;
-      /// MUMPS' LDL^T of a symmetric tangent (its analysis is kept while
-      /// the sparsity does not change).
+      /// MUMPS' LDL^T of a symmetric tangent, or on several ranks its LU
+      /// on rank 0 (its analysis is kept while the sparsity does not
+      /// change).
       std::unique_ptr<SymmetricInertia> symmetric;
+      /// @p symmetric holds an LDL^T (not an LU).
+      bool symmetric_ldlt = true;
       /// The work of symmetric factorizations released by reset().
       SymmetricInertia::Work released_work;
       /// The pivot order of the released factorization, for the next
@@ -279,7 +286,8 @@ namespace pneuma
       SymmetricInertia::PivotOrder released_order;
       void
       release_symmetric();
-      /// The active factorization is the LDL^T.
+      /// The active factorization is the one of @p symmetric (its LDL^T,
+      /// or the LU on rank 0).
       bool use_symmetric = false;
       /// set_symmetric_possible().
       bool symmetric_possible = true;
@@ -293,9 +301,10 @@ namespace pneuma
       /// Numeric factorization of the matrix bound to the Amesos problem.
       void
       numeric_factorization();
-      /// Numeric LDL^T factorization of @p A.
+      /// Numeric LDL^T (@p ldlt) or LU factorization of @p A through
+      /// SymmetricInertia.
       void
-      symmetric_factorization(const LA::SparseMatrix &A);
+      symmetric_factorization(const LA::SparseMatrix &A, const bool ldlt);
       /// Whether the next factorization of @p A is the LDL^T.
       bool
       choose_symmetric(const LA::SparseMatrix &A) const;

@@ -20,6 +20,19 @@
  *   threshold CNTL(3) (relative to the matrix norm), which are then
  *   neither negative nor positive.
  * The analysis is redone only when the sparsity pattern changes.
+ *
+ * **Reproducible on several ranks.** MUMPS' parallel factorization and
+ * solve are asynchronous: contribution blocks and right-hand-side pieces
+ * from other ranks are summed in the order they arrive, so on 2 ranks the
+ * same matrix gives factors and solutions that differ in the last bits
+ * from run to run (measured: 3 of 5 solves with one set of factors, and 2
+ * of 15 determinants, differed; ICNTL(13) = 1, no scaling, or no type-2
+ * nodes do not change that). By default the matrix is therefore gathered
+ * to rank 0, which factorizes and solves alone (MUMPS on MPI_COMM_SELF,
+ * the other ranks sleep meanwhile): the same input on the same ranks and
+ * threads gives the same bits. set_distributed_factorization(true)
+ * (Linear solver/direct/Distributed factorization) lets MUMPS use all
+ * ranks instead: faster on many ranks, not reproducible in the last digits.
  */
 
 #include <deal.II/base/mpi.h>
@@ -51,6 +64,13 @@ namespace pneuma
     class SymmetricInertia
     {
     public:
+      /// Factorize across all ranks (true) or on rank 0 alone (false, the
+      /// default: reproducible), for the objects constructed from now on.
+      static void
+      set_distributed_factorization(const bool distributed);
+      static bool
+      distributed_factorization();
+
       /**
        * @p zero_pivot_threshold: a pivot below this times the matrix norm
        * counts as a zero eigenvalue (CNTL(3)); 0 turns the null pivot
