@@ -11,6 +11,7 @@
 #include <pneuma/core/collective_error.h>
 #include <pneuma/core/input_error.h>
 #include <pneuma/core/interrupt.h>
+#include <pneuma/core/output.h>
 #include <pneuma/core/threads.h>
 #include <pneuma/simulator/simulator.h>
 
@@ -130,7 +131,7 @@ main(int argc, char **argv)
       // error on any rank is agreed on by all (no rank waits for ever) and
       // reported once.
       std::unique_ptr<pneuma::Simulator> simulator;
-      std::string                        error;
+      std::string                        error, output_directory;
       try
         {
           // What the input uses decides what is declared.
@@ -145,12 +146,12 @@ main(int argc, char **argv)
           simulator->setup();
           // Keep a copy of the parameters as used.
           prm.enter_subsection("Output");
-          const std::string dir = prm.get("Directory");
+          output_directory = prm.get("Directory");
           prm.leave_subsection();
           if (root)
             {
-              std::filesystem::create_directories(dir);
-              std::ofstream copy(dir + "/parameters.prm");
+              std::filesystem::create_directories(output_directory);
+              std::ofstream copy(output_directory + "/parameters.prm");
               prm.print_parameters(copy, dealii::ParameterHandler::ShortText);
             }
         }
@@ -180,8 +181,15 @@ main(int argc, char **argv)
       error = pneuma::agree_on_error(comm, error, pneuma::bad_input);
       if (!error.empty())
         {
+          // No output of the run is left, but a summary.json that records
+          // the error (a restart's files continue its checkpoint's run).
           if (root)
-            std::cerr << "pneuma: error in " << error << std::endl;
+            {
+              pneuma::record_input_error(output_directory,
+                                         error,
+                                         restart.empty());
+              std::cerr << "pneuma: error in " << error << std::endl;
+            }
           return pneuma::bad_input;
         }
       exit_code = result.exit_code;

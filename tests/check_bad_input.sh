@@ -178,6 +178,31 @@ check "$c"                          1 "Boundary conditions/Rigid regions: the me
 check "$dir/valid.prm"              1 "Output/Monitor points: 'nan,0,0' is not a finite point" --set "Output/Monitor points=nan,0,0"
 touch empty.prm
 check "empty.prm"                   1 "empty.prm: sets no parameter"
+# --set alone does not make a scene: the file is still empty.
+check "empty.prm"                   1 "empty.prm: sets no parameter (an empty file?)" --set "Geometry/Type=disc"
+# JSON values that are not one string or number name the entry.
+printf '{"Geometry": {"Type": "disc", "Global refinements": "1", "disc": {"Radius": true}},\n "Boundary conditions": {"Fixed boundaries": "0: xyz"}}\n' > wrong_type.json
+check "wrong_type.json"             1 "Geometry/disc/Radius: The string <true> does not match"
+printf '{"Geometry": {"Type": "disc", "Global refinements": "1", "disc": {"Radius": [0.1, 0.2]}},\n "Boundary conditions": {"Fixed boundaries": "0: xyz"}}\n' > array.json
+check "array.json"                  1 "Geometry/disc/Radius: is a JSON array; give the value as one string or number"
+check_mpi "array.json"              1 "Geometry/disc/Radius: is a JSON array"
+printf '[{"Geometry": {"Type": "disc"}}]\n' > top_array.json
+check "top_array.json"              1 "top_array.json: is a JSON array, not an object of subsections and entries"
+check "$dir/valid.prm"              1 "Adaptive refinement/Refine fraction: plus Adaptive refinement/Coarsen fraction must be at most 1" --set "Adaptive refinement/Refine fraction=0.7" --set "Adaptive refinement/Coarsen fraction=0.6"
+# An input error found once the run has started leaves no output of the
+# run but a summary.json that records it.
+only_summary() { # directory
+  if [ "$(ls -A "$1")" != "summary.json" ] || ! grep -q '"exit_code": 1' "$1/summary.json"; then
+    echo "FAIL input error in $1: left $(ls -A "$1" | tr '\n' ' ')"
+    fail=1
+  else
+    echo "ok   input error in $1: only summary.json, exit_code 1"
+  fi
+}
+check "$k"                          1 "Cables/Cable 1/Prestress factor/Function expression: the prestress force f(t) F is not finite at t = 0.625" --set "Output/Directory=input-error-1" --set "Output/Write VTU=true" --set "Cables/Cable 1/Prestress force=100" --set "Cables/Cable 1/Prestress factor/Function expression=sqrt(0.5-t)" --set "Output/Quiet=true"
+only_summary input-error-1
+check_mpi "$c"                      1 "walls face into the chamber" --set "Output/Directory=input-error-2" --set "Chambers/Chamber 1/Regions=-0, -1, -2"
+only_summary input-error-2
 check "$dir"                        1 "is a directory, not a parameter file"
 check "$k"                          1 "Contact/Pair 1/Membrane regions: the mesh has no cells in region 5" --set "Geometry/Type=disc" --set "Contact/Number of pairs=1" --set "Contact/Pair 1/Membrane regions=0, 5"
 check "$k"                          1 "Contact/Pair 1/Smoothed normal from: needs Master normal = smoothed" --set "Geometry/Type=disc" --set "Contact/Number of pairs=1" --set "Contact/Pair 1/Smoothed normal from=1"
@@ -217,6 +242,7 @@ check "$dir/valid.prm"              1 "Boundary conditions/Fixed points: 'nan,0,
 check "$k"                          1 "Cables/Cable 1/Number of elements: The string <0>" --set "Cables/Cable 1/Number of elements=0"
 check "$k"                          1 "Cables/Cable 1/Section semi-axes: The string <-0.01>" --set "Cables/Cable 1/Section semi-axes=-0.01"
 check "$k"                          1 "Cables/Cable 1/Young's modulus: must be > 0" --set "Cables/Cable 1/Young's modulus=0"
+check "$k"                          1 "Cables/Cable 1/Young's modulus: must be > 0 and at most 1e14 Pa" --set "Cables/Cable 1/Young's modulus=1e300"
 check "$k"                          1 "Cables/Cable 1/Prestress force: The string <nan>" --set "Cables/Cable 1/Prestress force=nan"
 check "$k"                          1 "Cables/Cable 1/Shape: The string <spiral>" --set "Cables/Cable 1/Shape=spiral"
 check "$k"                          1 "Cables/Cable 1/Start support: The string <glued>" --set "Cables/Cable 1/Start support=glued"
@@ -232,7 +258,7 @@ check "$k"                          1 "Cables/Cable 1/Start displacement/Functio
 # A load that becomes infinite later: exit 2 with the last finite state.
 check "$dir/valid.prm"              2 "could not be completed at t = 0.375 even with the minimum increment 0.1 (residual is not finite). The last converged state (t = 0.375) is written." --set "Output/Directory=late" --set "Output/Write VTU=true" --set "Loads/Pressure/Function expression=100*t+1/(0.5-t)" --set "Load stepping/Growth factor=1" --set "Load stepping/Cut-back factor=0.5" --set "Load stepping/Minimum increment=0.1"
 # Sizes: lengths in metres, the size guard.
-check "$dir/valid.prm"              1 "Geometry/disc: the membrane spans inf m; lengths are in metres" --set "Geometry/disc/Radius=1e300"
+check "$dir/valid.prm"              1 "Geometry/disc/Radius: is 1e+300 m; lengths are in metres (at most 1e6 m)" --set "Geometry/disc/Radius=1e300"
 check "$dir/valid.prm"              1 "Geometry/disc: the membrane spans 2.83e-09 m" --set "Geometry/disc/Radius=1e-9"
 check "$dir/valid.prm"              1 "Geometry/Global refinements: 12 refinements of 12 coarse cells make 2.01e+08 cells and about 6.04e+08 unknowns, which need about" --set "Geometry/Global refinements=12"
 check "$dir/valid.prm"              1 "Geometry/Global refinements: 1 refinements of 12 coarse cells make 48 cells and about 144 unknowns, which need about 0.2 GB of memory; the limit is 0.001 GB" --set "Geometry/Memory limit=0.001"
@@ -247,6 +273,8 @@ check "$dir/valid.prm"              1 "Load stepping/Path following/Target monit
 check "$dir/valid.prm"              1 "Target monitor value: applies to the last stage, which is under load control" --set "Load stepping/Path following/Target monitor value=0.01"
 check "$dir/valid.prm"              1 "Load stepping/Path following/Monitor point: displacement control needs a monitor point" --set "Load stepping/Control=displacement"
 check "$dir/valid.prm"              1 "Load stepping/Path following/Monitor point: a target monitor value needs a monitor point" --set "Load stepping/Control=arc-length" --set "Load stepping/Path following/Target monitor value=0.01"
+check "$dir/valid.prm"              1 "Load stepping/Path following/Monitor point: no such monitor point: it is 3, but Output/Monitor points has 1 point(s), numbered from 0" --set "Output/Monitor points=0,0,0" --set "Load stepping/Path following/Monitor point=3"
+check_mpi "$dir/valid.prm"          1 "Load stepping/Path following/Monitor point: no such monitor point: it is 3" --set "Output/Monitor points=0,0,0" --set "Load stepping/Path following/Monitor point=3"
 check "$dir/valid.prm"              1 "Load stepping/Control: stage 2 is path-controlled, but no load changes in it" --set "Loads/Pressure/Function expression=100*min(t,1)" --set "Load stepping/Stage end times=1, 2" --set "Load stepping/Control=load, arc-length"
 check "$dir/valid.prm"              1 "Load stepping/Control: stage 1 is path-controlled, but prescribed displacements change in it" --set "Load stepping/Control=arc-length" --set "Boundary conditions/Fixed boundaries=" --set "Boundary conditions/Prescribed displacement boundaries=0" --set "Boundary conditions/Prescribed displacement/Function expression=0; 0; 0.01*t"
 # A target the path never reaches: exit 2 with the last state (the run's

@@ -134,7 +134,7 @@ namespace pneuma
                             "Elements along the cable (polyline: spread over "
                             "the segments by length; ring; helix; a gmsh "
                             "mesh brings its own).",
-                            Patterns::Integer(1));
+                            Patterns::Integer(1, 100000));
           prm.add_parameter("Section semi-axes",
                             s.semi_axes,
                             "Semi-axes a, b of the elliptic section, or one "
@@ -236,9 +236,11 @@ namespace pneuma
                       path + "/Section semi-axes",
                       "the semi-axes must be > 0");
           d.youngs_modulus = s.youngs_modulus;
-          check_input(d.youngs_modulus > 0.,
+          // Above 1e14 Pa (100 times diamond's) a modulus is a typing
+          // error, and E A times a strain would overflow.
+          check_input(d.youngs_modulus > 0. && d.youngs_modulus <= 1e14,
                       path + "/Young's modulus",
-                      "must be > 0");
+                      "must be > 0 and at most 1e14 Pa");
           d.density           = s.density;
           d.prestress_force   = s.prestress_force;
           d.unstressed_length = s.unstressed_length;

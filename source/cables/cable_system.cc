@@ -10,6 +10,7 @@
 #include <pneuma/cables/cable_system.h>
 #include <pneuma/core/checkpoint.h>
 #include <pneuma/core/input_error.h>
+#include <pneuma/core/output.h>
 #include <pneuma/loads/loads.h>
 
 #include <algorithm>
@@ -1137,6 +1138,14 @@ namespace pneuma
                 fields[f][index] = out.values[f];
               ++index;
             }
+          // NaN and inf are never written (core/output.h).
+          for (unsigned int f = 0; f < fields.size(); ++f)
+            for (const double v : fields[f])
+              if (!std::isfinite(v))
+                throw NonFiniteOutput(
+                  "the field " + field_names[f] + " of cable "
+                  + std::to_string(k + 1) + " is not finite at t = "
+                  + std::to_string(t) + "; the state is not written");
           DataOut<1, 3> data_out;
           data_out.attach_dof_handler(b.dof_handler);
           data_out.add_data_vector(local_u,

@@ -103,7 +103,20 @@ namespace pneuma
           [&](const boost::property_tree::ptree &node) {
             for (const auto &[key, child] : node)
               {
+                check_input(!key.empty(),
+                            file,
+                            "is a JSON array, not an object of subsections "
+                            "and entries");
                 const std::string name = demangle(key);
+                // An array's items have empty keys: no entry takes one.
+                check_input(std::none_of(child.begin(),
+                                         child.end(),
+                                         [](const auto &item) {
+                                           return item.first.empty();
+                                         }),
+                            join(stack, name),
+                            "is a JSON array; give the value as one string "
+                            "or number (a list as \"1, 2, 3\")");
                 if (child.empty())
                   layout.values[join(stack, name)] = child.data();
                 else if (child.count("value") > 0)
@@ -123,8 +136,9 @@ namespace pneuma
     else
       layout.scan_prm(text.str(), file, 0);
     // An input that sets nothing would run the default scene, which has
-    // no supports: almost certainly not what was meant.
-    check_input(!layout.values.empty() || !overrides.empty(),
+    // no supports: almost certainly not what was meant. --set overrides
+    // alone do not make a scene.
+    check_input(!layout.values.empty(),
                 file,
                 "sets no parameter (an empty file?); pneuma "
                 "--print-parameters lists them all");
@@ -276,6 +290,11 @@ namespace pneuma
         catch (...)
           {
           }
+        // Every instance is declared with all its entries before the
+        // parse: a count beyond any scene is a typing error.
+        check_input(n <= 1000,
+                    count_entry,
+                    "is " + std::to_string(n) + "; at most 1000");
         for (const auto &name : subsections(parent))
           if (name.compare(0, prefix.size() + 1, prefix + " ") == 0)
             {

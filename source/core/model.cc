@@ -6,6 +6,7 @@
 #include <pneuma/core/input_layout.h>
 #include <pneuma/core/interrupt.h>
 #include <pneuma/core/model.h>
+#include <pneuma/core/output.h>
 #include <pneuma/solvers/path_following.h>
 
 #include <algorithm>
@@ -583,9 +584,12 @@ namespace pneuma
                       const double                   t,
                       const solvers::BorderedVector &state)
   {
-    // Never write a non-finite state.
-    AssertThrow(std::isfinite(state.field.l2_norm()),
-                ExcMessage("refusing to write a non-finite solution"));
+    // Never write a non-finite state (the norm is the same on every
+    // rank: all of them throw).
+    if (!std::isfinite(state.field.l2_norm()))
+      throw NonFiniteOutput("the state at t = " + std::to_string(t)
+                            + " is not finite (NaN or inf); it is not "
+                              "written");
     ghost(state.field);
     for (const auto &s : subsystems)
       if (auto *o = dynamic_cast<OutputFiles *>(s.get()))

@@ -59,7 +59,54 @@ namespace pneuma
         }
       return s + "\"";
     }
+    /**
+     * Remove the files a run writes into @p directory (solution_*,
+     * cables_*, the .pvd records, history.csv, summary.json,
+     * refinement.csv, cycle-*, checkpoint/).
+     */
+    void
+    remove_run_outputs(const std::string &directory)
+    {
+      namespace fs = std::filesystem;
+      std::error_code ec;
+      // Every VTU series (core/vtu_series.h): <name>[_<part>]_NNNN files
+      // and <name>.pvd.
+      static const std::regex files(
+        "[A-Za-z0-9]+(_[0-9]+)?_[0-9]{4}(\\.[0-9]+)?\\.(vtu|pvtu)|"
+        "[A-Za-z0-9]+\\.pvd|"
+        "history\\.csv|summary\\.json|refinement\\.csv");
+      static const std::regex folders(
+        "cycle-[0-9]+|checkpoint(\\.new|\\.old)?");
+      for (const auto &entry : fs::directory_iterator(directory, ec))
+        {
+          const std::string name = entry.path().filename().string();
+          const bool        ours =
+            (entry.is_regular_file(ec) && std::regex_match(name, files))
+            || (entry.is_directory(ec) && std::regex_match(name, folders));
+          if (ours)
+            fs::remove_all(entry.path(), ec);
+        }
+    }
   } // namespace
+
+  void
+  record_input_error(const std::string &directory,
+                     const std::string &message,
+                     const bool         remove_outputs)
+  {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (directory.empty() || !fs::is_directory(directory, ec))
+      return;
+    if (remove_outputs)
+      {
+        remove_run_outputs(directory);
+        fs::remove(directory + "/parameters.prm", ec);
+      }
+    std::ofstream json(directory + "/summary.json");
+    json << "{\n  \"exit_code\": 1,\n  \"message\": " << json_string(message)
+         << "\n}\n";
+  }
 
   void
   OutputWriter::declare_parameters(ParameterHandler &prm)
@@ -134,25 +181,7 @@ namespace pneuma
       {
         // The files of an earlier run into this directory go, so that no
         // file series mixes two runs (doc/user-guide.md "Outputs").
-        namespace fs = std::filesystem;
-        std::error_code ec;
-        for (const auto &entry : fs::directory_iterator(output_directory, ec))
-          {
-            // Every VTU series (core/vtu_series.h): <name>[_<part>]_NNNN
-            // files and <name>.pvd.
-            static const std::regex files(
-              "[A-Za-z0-9]+(_[0-9]+)?_[0-9]{4}(\\.[0-9]+)?\\.(vtu|pvtu)|"
-              "[A-Za-z0-9]+\\.pvd|"
-              "history\\.csv|summary\\.json|refinement\\.csv");
-            static const std::regex cycles(
-              "cycle-[0-9]+|checkpoint(\\.new|\\.old)?");
-            const std::string name = entry.path().filename().string();
-            const bool        ours =
-              (entry.is_regular_file(ec) && std::regex_match(name, files))
-              || (entry.is_directory(ec) && std::regex_match(name, cycles));
-            if (ours)
-              fs::remove_all(entry.path(), ec);
-          }
+        remove_run_outputs(output_directory);
       }
     start_history(comm, "");
   }

@@ -1,6 +1,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <pneuma/core/input_error.h>
+#include <pneuma/core/input_layout.h>
 #include <pneuma/core/parse_input.h>
 
 #include <fstream>
@@ -42,6 +43,40 @@ namespace pneuma
       return out;
     }
 
+    /**
+     * Set the entry @p path ("A/B/Entry") to @p value; an InputError
+     * naming @p label (the path, or the whole --set argument's path) if
+     * there is no such entry or the value does not match its pattern.
+     */
+    void
+    set_entry(dealii::ParameterHandler &prm,
+              const std::string        &path,
+              const std::string        &value,
+              const std::string        &label)
+    {
+      const auto parts = dealii::Utilities::split_string_list(path, '/');
+      check_input(!parts.empty(), label, "empty parameter path");
+      unsigned int depth = 0;
+      try
+        {
+          for (unsigned int i = 0; i + 1 < parts.size(); ++i, ++depth)
+            prm.enter_subsection(parts[i]);
+          prm.set(parts.back(), value);
+        }
+      catch (const std::exception &e)
+        {
+          for (; depth > 0; --depth)
+            prm.leave_subsection();
+          std::string what = short_message(e);
+          if (what.find("not yet declared") != std::string::npos)
+            what = "no such entry (pneuma --print-parameters lists "
+                   "them all)";
+          throw InputError(label, what);
+        }
+      for (; depth > 0; --depth)
+        prm.leave_subsection();
+    }
+
     void
     apply_overrides(dealii::ParameterHandler       &prm,
                     const std::vector<std::string> &overrides)
@@ -52,29 +87,13 @@ namespace pneuma
           check_input(eq != std::string::npos,
                       "--set " + o,
                       "expected Path/To/Entry=value");
-          const auto path =
-            dealii::Utilities::split_string_list(o.substr(0, eq), '/');
-          const std::string value = dealii::Utilities::trim(o.substr(eq + 1));
-          check_input(!path.empty(), "--set " + o, "empty parameter path");
-          unsigned int depth = 0;
-          try
-            {
-              for (unsigned int i = 0; i + 1 < path.size(); ++i, ++depth)
-                prm.enter_subsection(path[i]);
-              prm.set(path.back(), value);
-            }
-          catch (const std::exception &e)
-            {
-              for (; depth > 0; --depth)
-                prm.leave_subsection();
-              std::string what = short_message(e);
-              if (what.find("not yet declared") != std::string::npos)
-                what = "no such entry (pneuma --print-parameters lists "
-                       "them all)";
-              throw InputError(o.substr(0, eq), what);
-            }
-          for (; depth > 0; --depth)
-            prm.leave_subsection();
+          check_input(!dealii::Utilities::trim(o.substr(0, eq)).empty(),
+                      "--set " + o,
+                      "empty parameter path");
+          set_entry(prm,
+                    o.substr(0, eq),
+                    dealii::Utilities::trim(o.substr(eq + 1)),
+                    o.substr(0, eq));
         }
     }
   } // namespace
@@ -88,14 +107,23 @@ namespace pneuma
       std::ifstream in(file);
       check_input(static_cast<bool>(in), file, "cannot open parameter file");
     }
-    try
+    // A JSON file entry by entry, so that a message names the entry
+    // (InputLayout::read names a value that is an array).
+    if (file.size() > 5 && file.substr(file.size() - 5) == ".json")
       {
-        prm.parse_input(file, "", /*skip_undefined=*/false, true);
+        const InputLayout layout = InputLayout::read(file, {});
+        for (const auto &[path, value] : layout.entries())
+          set_entry(prm, path, value, path);
       }
-    catch (const std::exception &e)
-      {
-        throw InputError(file, short_message(e));
-      }
+    else
+      try
+        {
+          prm.parse_input(file, "", /*skip_undefined=*/false, true);
+        }
+      catch (const std::exception &e)
+        {
+          throw InputError(file, short_message(e));
+        }
     apply_overrides(prm, overrides);
   }
 

@@ -2,6 +2,7 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/error_estimator.h>
 
+#include <pneuma/core/input_error.h>
 #include <pneuma/geometry/adaptive_refinement.h>
 #include <pneuma/geometry/junctions.h>
 
@@ -158,7 +159,10 @@ namespace pneuma
     void
     AdaptiveRefinement::parse_parameters(ParameterHandler &)
     {
-      // Every entry is bound by declare_parameters().
+      check_input(refine_fraction + coarsen_fraction <= 1.,
+                  "Adaptive refinement/Refine fraction",
+                  "plus Adaptive refinement/Coarsen fraction must be at "
+                  "most 1 (a cell is refined or coarsened, not both)");
     }
 
     void

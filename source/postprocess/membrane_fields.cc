@@ -2,6 +2,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/fe/fe_values.h>
 
+#include <pneuma/core/output.h>
 #include <pneuma/membrane/surface_kinematics.h>
 #include <pneuma/membrane/tension_field.h>
 #include <pneuma/postprocess/membrane_fields.h>
@@ -27,6 +28,40 @@ namespace pneuma
       const unsigned int k1 = (kn == 0) ? 1 : 0;
       const unsigned int k2 = (kn == 2) ? 1 : 2;
       return {eig[k1].first, eig[k2].first, eig[k1].second, eig[k2].second};
+    }
+
+    CellWrinkling
+    cell_wrinkling(const FEValues<2, 3>            &fe_values,
+                   const std::vector<Tensor<2, 3>> &grad_u,
+                   const membrane::RegionMaterial  &material,
+                   const Tensor<1, 3>              &warp)
+    {
+      CellWrinkling result;
+      result.minor_force = std::numeric_limits<double>::max();
+      for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+        {
+          const auto frame =
+            membrane::tangent_frame(fe_values.normal_vector(q), warp);
+          const auto a = membrane::deformed_tangents(frame, grad_u[q]);
+          const auto state =
+            material.tension_field->state(membrane::right_cauchy_green(a));
+          const double w = fe_values.JxW(q);
+          result.areas[state.kind] += w;
+          result.compression +=
+            w * material.thickness * std::min(state.plain_minor_stress, 0.);
+          result.minor_force =
+            std::min(result.minor_force,
+                     material.thickness * state.plain_minor_stress);
+          if (state.kind == membrane::WrinklingState::wrinkled)
+            {
+              // The tension direction, current, sign-aligned.
+              Tensor<1, 3> d = state.tension_direction[0] * a[0]
+                               + state.tension_direction[1] * a[1];
+              d /= d.norm();
+              result.direction += (d * result.direction < 0. ? -w : w) * d;
+            }
+        }
+      return result;
     }
 
     CellFields
@@ -62,7 +97,9 @@ namespace pneuma
                                        "wrinkle_direction_x",
                                        "wrinkle_direction_y",
                                        "wrinkle_direction_z",
-                                       "relaxed_compression"})
+                                       "relaxed_compression",
+                                       "wrinkled_fraction",
+                                       "slack_fraction"})
           f.names.push_back(name);
       const unsigned int n_cells =
         dof_handler.get_triangulation().n_active_cells();
@@ -77,6 +114,7 @@ namespace pneuma
                                  | update_JxW_values);
       const FEValuesExtractors::Vector displacement(0);
       std::vector<Tensor<2, 3>>        grad_u(quadrature.size());
+      unsigned int                     non_finite = 0;
 
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
@@ -89,11 +127,6 @@ namespace pneuma
             SymmetricTensor<2, 2> E_avg;
             Tensor<1, 3>          normal_avg;
             double                l3 = 0., area = 0.;
-            // Wrinkling: area per state, tension direction (current,
-            // sign-aligned), relaxed compression.
-            std::array<double, 3> state_area{{0., 0., 0.}};
-            Tensor<1, 3>          wrinkle;
-            double                compression = 0.;
             for (unsigned int q = 0; q < quadrature.size(); ++q)
               {
                 const auto frame =
@@ -108,26 +141,19 @@ namespace pneuma
                   w * membrane::membrane_forces(a, S, material.thickness);
                 E_avg += w * 0.5 * (C - unit_symmetric_tensor<2>());
                 l3 += w * material.law->thickness_stretch(C);
-                if (material.tension_field)
-                  {
-                    const auto state = material.tension_field->state(C);
-                    state_area[state.kind] += w;
-                    compression += w * material.thickness
-                                   * std::min(state.plain_minor_stress, 0.);
-                    if (state.kind == membrane::WrinklingState::wrinkled)
-                      {
-                        Tensor<1, 3> d = state.tension_direction[0] * a[0]
-                                         + state.tension_direction[1] * a[1];
-                        d /= d.norm();
-                        wrinkle += (d * wrinkle < 0. ? -w : w) * d;
-                      }
-                  }
                 normal_avg += w * cross_product_3d(a[0], a[1]);
                 area += w;
               }
             n_avg /= area;
             E_avg /= area;
             l3 /= area;
+            // Forces that are not finite (a law evaluated where it cannot
+            // be) are never written: counted and reported below.
+            if (!std::isfinite(n_avg.norm() + E_avg.norm() + l3))
+              {
+                ++non_finite;
+                continue;
+              }
             const unsigned int k = cell->active_cell_index();
             f.values[0][k]       = n_avg[0][0];
             f.values[1][k]       = n_avg[1][1];
@@ -154,21 +180,34 @@ namespace pneuma
             f.values[15][k] = m - r;
             f.values[16][k] = l3;
             f.values[17][k] = cell->material_id();
-            if (wrinkling)
+            if (wrinkling && material.tension_field)
               {
+                // The areas of summary.json's wrinkled_area and
+                // slack_area, cell by cell: the same function.
+                const CellWrinkling c =
+                  cell_wrinkling(fe_values, grad_u, material, warp);
                 // The state that covers most of the cell.
                 unsigned int s = 0;
                 for (unsigned int i = 1; i < 3; ++i)
-                  if (state_area[i] > state_area[s])
+                  if (c.areas[i] > c.areas[s])
                     s = i;
-                f.values[18][k] = s;
-                if (wrinkle.norm() > 0.)
-                  wrinkle /= wrinkle.norm();
+                f.values[18][k]   = s;
+                const double norm = c.direction.norm();
                 for (unsigned int d = 0; d < 3; ++d)
-                  f.values[19 + d][k] = wrinkle[d];
-                f.values[22][k] = compression / area;
+                  f.values[19 + d][k] = norm > 0. ? c.direction[d] / norm : 0.;
+                f.values[22][k] = c.compression / area;
+                f.values[23][k] = c.areas[1] / area;
+                f.values[24][k] = c.areas[2] / area;
               }
           }
+      // On every rank alike: the writer is collective.
+      non_finite =
+        Utilities::MPI::sum(non_finite, dof_handler.get_communicator());
+      if (non_finite > 0)
+        throw NonFiniteOutput("the membrane forces of the state are not "
+                              "finite in "
+                              + std::to_string(non_finite)
+                              + " cell(s); it is not written");
       return f;
     }
 
@@ -196,20 +235,13 @@ namespace pneuma
             const auto &material = materials[cell->material_id()];
             if (!material.tension_field)
               continue;
-            const Tensor<1, 3> warp = material.warp(geometry, cell);
             fe_values.reinit(cell);
             fe_values[displacement].get_function_gradients(u, grad_u);
-            for (unsigned int q = 0; q < quadrature.size(); ++q)
-              {
-                const auto frame =
-                  membrane::tangent_frame(fe_values.normal_vector(q), warp);
-                const auto C = membrane::right_cauchy_green(
-                  membrane::deformed_tangents(frame, grad_u[q]));
-                const auto state = material.tension_field->state(C);
-                areas[state.kind] += fe_values.JxW(q);
-                minor = std::min(minor,
-                                 material.thickness * state.plain_minor_stress);
-              }
+            const CellWrinkling c = cell_wrinkling(
+              fe_values, grad_u, material, material.warp(geometry, cell));
+            for (unsigned int i = 0; i < 3; ++i)
+              areas[i] += c.areas[i];
+            minor = std::min(minor, c.minor_force);
           }
       const MPI_Comm comm = dof_handler.get_communicator();
       for (auto &a : areas)

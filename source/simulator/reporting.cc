@@ -142,7 +142,7 @@ namespace pneuma
       {
         output.summary(row, result.message, timer);
       }
-    catch (const WriteError &e)
+    catch (const OutputError &e)
       {
         result.message   = result.exit_code == success
                              ? e.what()

@@ -218,7 +218,7 @@ namespace pneuma
             && (last_written != run.counters.steps || end.output_changed))
           write_vtu(run.counters.steps, end.time, end.state);
       }
-    catch (const WriteError &e)
+    catch (const OutputError &e)
       {
         // The run stopped inside the observer: its last converged state
         // is the one the observer saw.

@@ -79,8 +79,9 @@ namespace pneuma
     RunResult
     summarize(const strategies::Run &run, const strategies::Outcome &end);
 
-    /// Every rank's write either succeeds or throws WriteError naming
-    /// @p file on all ranks alike.
+    /// Every rank's write either succeeds or throws, on all ranks alike,
+    /// WriteError naming @p file or NonFiniteOutput (a state with NaN or
+    /// inf is never written).
     template <typename Write>
     void
     collectively(const Write &write, const std::string &file) const;
@@ -146,17 +147,33 @@ namespace pneuma
   Simulator::Impl::collectively(const Write       &write,
                                 const std::string &file) const
   {
-    bool failed = false;
+    // 1: a write failed (the disk); 2: the state is not finite (every
+    // rank knows it alike; not the disk's fault).
+    unsigned int failed = 0;
+    std::string  what;
     try
       {
         write();
       }
+    catch (const NonFiniteOutput &e)
+      {
+        failed = 2;
+        what   = e.what();
+      }
     catch (const std::exception &)
       {
-        failed = true;
+        failed = 1;
       }
-    if (dealii::Utilities::MPI::max(static_cast<unsigned int>(failed), comm)
-        > 0)
+    failed = dealii::Utilities::MPI::max(failed, comm);
+    if (failed == 2)
+      {
+        // The message of the first rank that has one (a cable's writer
+        // is one rank).
+        for (const auto &m : dealii::Utilities::MPI::all_gather(comm, what))
+          if (!m.empty())
+            throw NonFiniteOutput(m);
+      }
+    if (failed == 1)
       throw WriteError(file);
   }
 } // namespace pneuma

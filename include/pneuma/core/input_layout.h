@@ -61,7 +61,8 @@ namespace pneuma
     /**
      * Instances "<prefix> 1" .. "<prefix> N" of a numbered family under
      * @p parent, N from @p count_entry (a path; one in template mode).
-     * Throws InputError naming an instance the input opens beyond N.
+     * Throws InputError naming an instance the input opens beyond N, or
+     * @p count_entry if N is above 1000.
      */
     std::vector<std::string>
     numbered(const std::string &parent,

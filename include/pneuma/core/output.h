@@ -23,17 +23,50 @@
 
 namespace pneuma
 {
+  /// An output of the run that was not written: the run stops with exit
+  /// code 2 and the message.
+  class OutputError : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
+  };
+
   /// A file of the run could not be written (full disk, removed
   /// directory); the message names it.
-  class WriteError : public std::runtime_error
+  class WriteError : public OutputError
   {
   public:
     explicit WriteError(const std::string &file)
-      : std::runtime_error("cannot write '" + file
-                           + "' (is the disk full or the directory gone?)")
+      : OutputError("cannot write '" + file
+                    + "' (is the disk full or the directory gone?)")
     {
     }
   };
+
+  /// A state that is not finite was to be written (it is not: NaN and inf
+  /// are never written); thrown on every rank alike.
+  class NonFiniteOutput : public OutputError
+  {
+  public:
+    explicit NonFiniteOutput(const std::string &what)
+      : OutputError(what)
+    {
+    }
+  };
+
+  /**
+   * After an input error found once the run had started (rank 0): remove
+   * the files of the run in @p directory if @p remove_outputs (a fresh
+   * run's: history.csv, parameters.prm, the VTU and .pvd series,
+   * refinement.csv, cycle-*, checkpoint/, as OutputWriter::prepare() does
+   * before a run; a restart's continue its checkpoint's run and stay),
+   * and write summary.json with exit_code 1 and @p message. Nothing if
+   * @p directory does not exist.
+   */
+  void
+  record_input_error(const std::string &directory,
+                     const std::string &message,
+                     const bool         remove_outputs);
 
   /// The "Output" subsection and the writers of history and summary.
   class OutputWriter

@@ -26,6 +26,18 @@ namespace pneuma
     /// Manifold id of the curved part of a built-in surface.
     constexpr types::manifold_id curved_manifold = 1;
 
+    /**
+     * The coarse cells along a cylinder of @p length and @p radius: @p given
+     * if not 0, else nearly square cells (4 around). An InputError names
+     * @p path's Radius if that needs more than 1000 (a radius in the wrong
+     * units would otherwise make a coarse mesh of 10^12 cells).
+     */
+    unsigned int
+    cylinder_cells_along(double             length,
+                         double             radius,
+                         unsigned int       given,
+                         const std::string &path);
+
     /// One kind of membrane surface.
     class SurfaceGeometry
     {

@@ -6,15 +6,25 @@
  * quadrature points: Cauchy membrane forces per current length (tensor
  * entries, principal values and directions), principal Green-Lagrange
  * strains, and the thickness stretch lambda_3 = h/H; where a region
- * wrinkles (membrane/tension_field.h) also the wrinkling state that covers
- * most of the cell (0 taut, 1 wrinkled, 2 slack), the direction of the
+ * wrinkles (membrane/tension_field.h) also the fractions of the cell's
+ * area that are wrinkled and slack, the wrinkling state that covers most
+ * of the cell (0 taut, 1 wrinkled, 2 slack), the direction of the
  * wrinkles' crests (the tension) and the relaxed compression (the smaller
  * principal membrane force H S_2 [N/m, per reference length] the plain law
  * would carry).
+ *
+ * The wrinkled and slack areas have one definition, by quadrature point
+ * (cell_wrinkling()): each point of the cell's Gauss rule is taut,
+ * wrinkled or slack, and carries its reference area JxW. summary.json's
+ * wrinkled_area and slack_area are their sums over all cells; the VTU's
+ * wrinkled_fraction and slack_fraction are each cell's sums over its
+ * reference area, so that summing fraction times cell area gives
+ * summary.json's numbers.
  */
 
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/vector.h>
 
@@ -52,6 +62,33 @@ namespace pneuma
       std::vector<std::string>    names;
       std::vector<Vector<double>> values;
     };
+
+    /// The wrinkling of one cell, by quadrature point.
+    struct CellWrinkling
+    {
+      /// Reference areas [m^2] of the taut, wrinkled and slack points.
+      std::array<double, 3> areas{{0., 0., 0.}};
+      /// The tension direction (current), summed over the wrinkled points
+      /// with their areas, sign-aligned; zero if none is wrinkled.
+      Tensor<1, 3> direction;
+      /// The integral of the relaxed compression H min(S_2, 0) [N].
+      double compression = 0.;
+      /// The least minor principal force H S_2 [N/m] of the plain law.
+      double minor_force = 0.;
+    };
+
+    /**
+     * The wrinkling of the cell @p fe_values is initialized on (its
+     * region's @p material has a tension field; @p warp its warp
+     * direction), from the displacement gradients @p grad_u at the
+     * quadrature points: the one definition of the wrinkled and slack
+     * areas that summary.json and the VTU share.
+     */
+    CellWrinkling
+    cell_wrinkling(const FEValues<2, 3>            &fe_values,
+                   const std::vector<Tensor<2, 3>> &grad_u,
+                   const membrane::RegionMaterial  &material,
+                   const Tensor<1, 3>              &warp);
 
     /// Compute the membrane cell fields at the ghosted displacement @p u.
     CellFields

@@ -48,10 +48,11 @@ namespace pneuma
         void
         parse_parameters(ParameterHandler &, const std::string &path) override
         {
-          check_input(inner > 0., path + "/Inner radius", "must be positive");
+          check_length(inner, path + "/Inner radius");
           check_input(outer > inner,
                       path + "/Outer radius",
                       "must be larger than the Inner radius");
+          check_length(outer, path + "/Outer radius");
         }
         void
         create_coarse_mesh(Triangulation<2, 3> &coarse) const override

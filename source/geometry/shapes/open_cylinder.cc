@@ -44,19 +44,15 @@ namespace pneuma
         void
         parse_parameters(ParameterHandler &, const std::string &path) override
         {
-          check_input(radius > 0., path + "/Radius", "must be positive");
-          check_input(length > 0., path + "/Length", "must be positive");
+          check_length(radius, path + "/Radius");
+          check_length(length, path + "/Length");
+          n_axial =
+            cylinder_cells_along(length, radius, cells_along_length, path);
         }
         void
         create_coarse_mesh(Triangulation<2, 3> &coarse) const override
         {
           // The hull (boundary 0) of a solid cylinder.
-          const unsigned int n_axial =
-            cells_along_length > 0
-              ? cells_along_length
-              : std::max(1u,
-                         static_cast<unsigned int>(
-                           std::round(length / (0.5 * M_PI * radius))));
           Triangulation<3> solid;
           GridGenerator::subdivided_cylinder(solid,
                                              n_axial,
@@ -97,6 +93,8 @@ namespace pneuma
       private:
         double       radius = 1., length = 1.;
         unsigned int cells_along_length = 0;
+        /// The coarse cells along the axis (parse_parameters()).
+        unsigned int n_axial = 1;
       };
     } // namespace
 

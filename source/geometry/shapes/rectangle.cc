@@ -38,8 +38,8 @@ namespace pneuma
         void
         parse_parameters(ParameterHandler &, const std::string &path) override
         {
-          check_input(length > 0., path + "/Length", "must be positive");
-          check_input(width > 0., path + "/Width", "must be positive");
+          check_length(length, path + "/Length");
+          check_length(width, path + "/Width");
         }
         void
         create_coarse_mesh(Triangulation<2, 3> &coarse) const override

@@ -30,7 +30,7 @@ namespace pneuma
         void
         parse_parameters(ParameterHandler &, const std::string &path) override
         {
-          check_input(radius > 0., path + "/Radius", "must be positive");
+          check_length(radius, path + "/Radius");
         }
         void
         create_coarse_mesh(Triangulation<2, 3> &coarse) const override

@@ -81,8 +81,10 @@ namespace pneuma
         void
         parse_parameters(ParameterHandler &, const std::string &path) override
         {
-          check_input(side > 0., path + "/Side length", "must be positive");
-          check_input(std::isfinite(rise), path + "/Rise", "must be finite");
+          check_length(side, path + "/Side length");
+          check_input(std::abs(rise) <= 1e6,
+                      path + "/Rise",
+                      "must be finite and at most 1e6 m");
         }
         void
         create_coarse_mesh(Triangulation<2, 3> &coarse) const override

@@ -105,10 +105,13 @@ namespace pneuma
     StaticLoadPath::check(Model &model) const
     {
       // What the path-controlled stages need, before any step.
-      const Stages &stages = stepping.stages();
+      const Stages      &stages   = stepping.stages();
+      const unsigned int n_points = model.n_monitor_points();
+      // A monitor point other than the default must exist, used or not.
+      if (path.monitor_point_index() > 0)
+        path.check_monitor_point(n_points, "no such monitor point");
       if (!follows_path())
         return;
-      const unsigned int n_points = model.n_monitor_points();
       for (unsigned int stage = 0; stage < stages.n_stages(); ++stage)
         if (control_of(stage) != Control::load)
           {

@@ -85,6 +85,13 @@ namespace pneuma
       void
       parse_parameters(const bool last_is_path);
 
+      /// The entry Monitor point.
+      unsigned int
+      monitor_point_index() const
+      {
+        return monitor_point;
+      }
+
       /// InputError naming Monitor point (@p what needs it) unless it is
       /// one of the @p n_points monitor points.
       void
