@@ -50,6 +50,9 @@ namespace pneuma
         /// Pure Newton takes over once |r| <= switch_ratio |r_ref|, or the
         /// shift has fallen to min_shift times its start.
         static constexpr double switch_ratio = 1e-2, min_shift = 1e-6;
+        /// After a failed pure Newton phase the continuation goes on to a
+        /// hand-over tighter by this factor, down to min_switch_ratio.
+        static constexpr double tighter = 1e-2, min_switch_ratio = 1e-9;
         /// Failures that cost no iteration (the linear solver) stop it.
         static constexpr unsigned int max_failures = 20;
         /// Iteration budget, in units of Newton/Maximum iterations.
@@ -565,20 +568,28 @@ namespace pneuma
                                BorderedVector           &r,
                                const double              r_ref,
                                const ConditionalOStream &out,
-                               NewtonResult             &result) const
+                               NewtonResult             &result,
+                               ContinuationPath         &path,
+                               bool                      fresh) const
     {
       using S = ContinuationSchedule;
-      problem.assemble(u, r); // the scale is taken from K at the start
-      const double initial = problem.initial_shift(shift_factor);
-      Phase        phase;
-      phase.shift           = initial;
+      if (path.initial == 0.)
+        {
+          problem.assemble(u, r); // the scale is taken from K at the start
+          fresh        = true;
+          path.initial = problem.initial_shift(shift_factor);
+          path.shift   = path.initial;
+        }
+      Phase phase;
+      phase.shift           = path.shift;
       phase.max_iterations  = S::inner_iterations;
       phase.tolerance       = S::inner_tolerance;
       unsigned int failures = 0;
-      // r and the tangent last assembled are those at u: a phase starting
-      // there need not assemble again.
-      bool fresh = true;
-      while (result.iterations < S::budget * max_iter && !problem.interrupted())
+      // r and the tangent last assembled are those at u when fresh: a
+      // phase starting there need not assemble again.
+      const unsigned int start = result.iterations;
+      while (path.spent + (result.iterations - start) < S::budget * max_iter
+             && !problem.interrupted())
         {
           phase.anchor = u;
           if (!iterate(
@@ -595,11 +606,13 @@ namespace pneuma
             }
           problem.assemble(u, r);
           fresh = true;
-          if (r.l2_norm() <= S::switch_ratio * r_ref
-              || phase.shift < S::min_shift * initial)
+          if (r.l2_norm() <= path.switch_ratio * r_ref
+              || phase.shift < S::min_shift * path.initial)
             break;
           phase.shift *= S::shrink;
         }
+      path.shift = phase.shift;
+      path.spent += result.iterations - start;
       result.residual_history.assign(1, r.l2_norm());
       result.fail(NewtonFailure::none, "");
       result.convergence_test.clear();
@@ -654,6 +667,21 @@ namespace pneuma
         problem.assemble(u, r);
     }
 
+    bool
+    NewtonSolver::back_to_continuation(NonlinearProblem &problem,
+                                       ContinuationPath &path) const
+    {
+      using S = ContinuationSchedule;
+      // Not after an interrupt, a spent budget or a spent shift.
+      if (problem.interrupted() || path.spent >= S::budget * max_iter
+          || path.shift < S::min_shift * path.initial
+          || path.switch_ratio < S::min_switch_ratio)
+        return false;
+      path.switch_ratio *= S::tighter;
+      path.shift *= S::shrink;
+      return true;
+    }
+
     NewtonResult
     NewtonSolver::solve(NonlinearProblem         &problem,
                         BorderedVector           &u,
@@ -697,12 +725,33 @@ namespace pneuma
       if (print_table)
         out << "    (" << result.failure_reason
             << ": continuing with the regularised iteration)\n";
+      //    A pure Newton phase that fails (it explodes from a hand-over
+      //    that is still far from equilibrium, a flaccid airbag on a fine
+      //    mesh) is not kept: the continuation goes on from its hand-over
+      //    with smaller shifts, to a 100 times tighter hand-over, until the
+      //    shift is spent.
       u = u_start;
       result.residual_history.assign(1, r0);
-      const bool fresh = continuation(problem, u, r, r_ref, out, result);
-      result.converged =
-        iterate(problem, u, newton, r_ref, out, result, fresh ? &r : nullptr);
-      return result;
+      ContinuationPath path;
+      path.switch_ratio = ContinuationSchedule::switch_ratio;
+      bool fresh        = continuation(problem, u, r, r_ref, out, result, path);
+      while (true)
+        {
+          const BorderedVector u_handover(u), r_handover(r);
+          result.converged = iterate(
+            problem, u, newton, r_ref, out, result, fresh ? &r : nullptr);
+          if (result.converged || !back_to_continuation(problem, path))
+            return result;
+          if (print_table)
+            out << "    (" << result.failure_reason
+                << ": back to the regularised iteration at |r|/|r_ref| = "
+                << std::scientific << std::setprecision(3)
+                << r_handover.l2_norm() / r_ref << ", shift " << path.shift
+                << std::defaultfloat << ")\n";
+          u     = u_handover;
+          r     = r_handover;
+          fresh = continuation(problem, u, r, r_ref, out, result, path, false);
+        }
     }
   } // namespace solvers
 } // namespace pneuma

@@ -304,16 +304,37 @@ namespace pneuma
                                 const ConditionalOStream &out,
                                 NewtonResult             &result) const;
 
-      /// The regularised iteration from @p u; leaves in @p r the
-      /// residual at the final @p u. True if the tangent last assembled is
-      /// the one at @p u too (the next phase need not assemble again).
+      /// Where the regularised iteration stands: its first shift (0: not
+      /// started), its current one, the |r|/|r_ref| at which it hands
+      /// over to pure Newton, and the iterations it has spent (its budget
+      /// is 4 Maximum iterations; the pure Newton phases have their own).
+      struct ContinuationPath
+      {
+        double       initial = 0., shift = 0., switch_ratio = 0.;
+        unsigned int spent = 0;
+      };
+
+      /// The regularised iteration from @p u along @p path (from its
+      /// start if it has none; @p fresh: @p r and the tangent last
+      /// assembled are those at @p u); leaves in @p r the residual at the
+      /// final @p u. True if the tangent last assembled is the one at
+      /// @p u too (the next phase need not assemble again).
       bool
       continuation(NonlinearProblem         &problem,
                    BorderedVector           &u,
                    BorderedVector           &r,
                    const double              r_ref,
                    const ConditionalOStream &out,
-                   NewtonResult             &result) const;
+                   NewtonResult             &result,
+                   ContinuationPath         &path,
+                   bool                      fresh = true) const;
+
+      /// After a failed pure Newton phase: whether the continuation can go
+      /// on (budget, shift and hand-over left), and if so @p path with a
+      /// smaller shift and a tighter hand-over.
+      bool
+      back_to_continuation(NonlinearProblem &problem,
+                           ContinuationPath &path) const;
 
       void
       print_header(NonlinearProblem         &problem,
