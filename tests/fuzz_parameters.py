@@ -2,17 +2,23 @@
 """Fuzz test of the parameter input: bad input never crashes.
 
 Usage: fuzz_parameters.py PNEUMA SOURCE_DIR [--seconds 120] [--seed N]
-                          [--case K] [--timeout 180] [--work DIR]
+                          [--case K] [--cpu-limit 120] [--timeout 900]
+                          [--work DIR]
 
 Mutates the shipped parameter files (SOURCE_DIR/parameter_files/*.prm and
 SOURCE_DIR/tests/*.prm) for a fixed wall time: entries the file sets, or
 any entry of `pneuma --print-parameters-json`, get values of the wrong
 kind, out of range, empty, huge or not finite (through --set), or the
 file's text is cut, lines are dropped, repeated or swapped. Each run is
-cut short (Checkpoint/Stop after step = 2, at most two global refinements)
-and must
-- exit with 0, 1 or 2 (never 3, a signal or a hang: each run has a
-  timeout), on 1 rank or, for every eighth input, on 2;
+cut short (Checkpoint/Stop after step = 2, at most two global refinements,
+Newton/Maximum iterations = 6, so that an input that fails does so after
+few iterations) and must
+- exit with 0, 1 or 2 (never 3, a signal or a hang), on 1 rank or, for
+  every eighth input, on 2. A hang is judged by CPU time, which does not
+  depend on how busy the machine is: every process of a run may use
+  --cpu-limit seconds of CPU (120; RLIMIT_CPU, then SIGXCPU), and a run
+  that sleeps (a deadlock without spinning) is stopped after --timeout
+  seconds of wall time (900);
 - write no NaN or inf into any output (history.csv, summary.json, every
   VTU read back with VTK, tests/check_outputs_finite.py);
 - with exit 1, print its message and leave no output but a summary.json
@@ -30,7 +36,9 @@ import math
 import os
 import random
 import re
+import resource
 import shutil
+import signal
 import subprocess
 import sys
 import time
@@ -48,7 +56,7 @@ WRONG = ["", " ", "abc", "true", "no", "-1", "0", "-0", "1e300", "-1e300",
          "if(t<0.5,1,nan)", "log(t)", "1: sphere 0,0,0"]
 # Entries that place or silence the run (set last by the fuzzer).
 FIXED = ("Output/Directory", "Output/Test output", "Output/Quiet",
-         "Checkpoint/Stop after step")
+         "Checkpoint/Stop after step", "Newton/Maximum iterations")
 NUMBER = re.compile(r"[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?")
 
 
@@ -228,7 +236,8 @@ def run_case(args, k, files, patterns):
         open(prm, "w").write(text)
     out = os.path.join(work, "out")
     fixed = [f"Output/Directory={out}", "Output/Quiet=true",
-             "Output/Test output=false", "Checkpoint/Stop after step=2"]
+             "Output/Test output=false", "Checkpoint/Stop after step=2",
+             "Newton/Maximum iterations=6"]
     # At most two global refinements (fewer leave the supports of the
     # cylinder scenes inside their rigid plates), unless mutated.
     refinements = dict(entries(open(base).read())).get(
@@ -242,13 +251,22 @@ def run_case(args, k, files, patterns):
     if ranks > 1:
         command = ["mpirun", "-np", str(ranks)] + command
     try:
+        def cpu_limit():
+            # Inherited by mpirun's ranks.
+            resource.setrlimit(resource.RLIMIT_CPU,
+                               (int(args.cpu_limit), int(args.cpu_limit) + 5))
         result = subprocess.run(command, cwd=args.source, capture_output=True,
                                 text=True, errors="replace",
-                                timeout=args.timeout)
+                                timeout=args.timeout, preexec_fn=cpu_limit)
         code, log = result.returncode, result.stdout + result.stderr
-    except subprocess.TimeoutExpired as e:
+        if code == -signal.SIGXCPU or "CPU time limit" in log:
+            code = "cpu-limit"
+            log = (f"more than {args.cpu_limit:.0f} s of CPU (a hang, or far "
+                   "too slow)\n" + log)
+    except subprocess.TimeoutExpired:
         code = "timeout"
-        log = f"no answer within {args.timeout:.0f} s (a hang, or far too slow)"
+        log = (f"no answer within {args.timeout:.0f} s of wall time (a "
+               "sleeping hang)")
     problems = []
     if code not in (0, 1, 2):
         problems.append(f"exit {code}: " + log.strip()[-600:])
@@ -276,7 +294,8 @@ def main():
     parser.add_argument("--seed", type=int,
                         default=int(os.environ.get("FUZZ_SEED", "46")))
     parser.add_argument("--case", type=int, default=None)
-    parser.add_argument("--timeout", type=float, default=180.)
+    parser.add_argument("--timeout", type=float, default=900.)
+    parser.add_argument("--cpu-limit", type=float, default=120.)
     parser.add_argument("--work", default="fuzz")
     parser.add_argument("--verbose", action="store_true",
                         help="print every input and its outcome")
