@@ -9,6 +9,18 @@ namespace pneuma
 {
   namespace geometry
   {
+    void
+    check_length(const double value, const std::string &parameter)
+    {
+      check_input(value > 0., parameter, "must be positive");
+      if (!(value <= 1e6))
+        {
+          std::ostringstream what;
+          what << "is " << value << " m; lengths are in metres (at most 1e6 m)";
+          throw InputError(parameter, what.str());
+        }
+    }
+
     unsigned int
     cylinder_cells_along(const double       length,
                          const double       radius,

@@ -7,7 +7,6 @@
  * it into a single line on stderr and exit code 1.
  */
 
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -38,22 +37,5 @@ namespace pneuma
   {
     if (!condition)
       throw InputError(parameter, what);
-  }
-
-  /**
-   * Check that @p value, the length @p parameter [m] of a geometry, is
-   * positive and at most 1e6 m (lengths are in metres: a larger one is a
-   * typing error, e.g. 1e300, and would overflow the mesh's extent).
-   */
-  inline void
-  check_length(const double value, const std::string &parameter)
-  {
-    check_input(value > 0., parameter, "must be positive");
-    if (!(value <= 1e6))
-      {
-        std::ostringstream what;
-        what << "is " << value << " m; lengths are in metres (at most 1e6 m)";
-        throw InputError(parameter, what.str());
-      }
   }
 } // namespace pneuma

@@ -27,6 +27,14 @@ namespace pneuma
     constexpr types::manifold_id curved_manifold = 1;
 
     /**
+     * Check that @p value, the length @p parameter [m] of a geometry, is
+     * positive and at most 1e6 m (lengths are in metres: a larger one is a
+     * typing error, e.g. 1e300, and would overflow the mesh's extent).
+     */
+    void
+    check_length(double value, const std::string &parameter);
+
+    /**
      * The coarse cells along a cylinder of @p length and @p radius: @p given
      * if not 0, else nearly square cells (4 around). An InputError names
      * @p path's Radius if that needs more than 1000 (a radius in the wrong
