@@ -89,6 +89,12 @@ check "$dir/valid.prm"              1 "Discretisation/Polynomial degree: form fi
 check_mpi "$dir/valid.prm"          1 "Materials/Region 0/Prestress: form finding needs a positive prestress" --set "Form finding/Enabled=true" --set "Discretisation/Polynomial degree=2"
 check "$dir/valid.prm"              1 "Form finding/Homotopy factor: must be in [0, 1)" --set "Form finding/Homotopy factor=1"
 check "$dir/valid.prm"              2 "the form finding did not converge in 2 updates" --set "Geometry/Type=open cylinder" --set "Boundary conditions/Fixed boundaries=0: xyz; 1: xyz" --set "Form finding/Enabled=true" --set "Discretisation/Polynomial degree=2" --set "Materials/Region 0/Prestress=100" --set "Form finding/Maximum updates=2"
+# Dynamic relaxation: tolerances out of range, a mass below Gershgorin's
+# limit, and a relaxation that runs out of iterations (exit 2).
+check "$dir/valid.prm"              1 "Dynamic relaxation/Residual tolerance: must be in (0, 1)" --set "Load stepping/Strategy=relaxation" --set "Dynamic relaxation/Residual tolerance=2"
+check "$dir/valid.prm"              1 "Mass safety factor" --set "Load stepping/Strategy=relaxation" --set "Dynamic relaxation/Mass safety factor=0.5"
+check_mpi "$dir/valid.prm"          2 "the dynamic relaxation failed: no convergence in 3 iterations (Dynamic relaxation/Maximum iterations" --set "Load stepping/Strategy=relaxation" --set "Dynamic relaxation/Maximum iterations=3" --set "Loads/Pressure/Function expression=1000*t"
+check "$dir/valid.prm"              1 "Load stepping/Strategy: unknown 'relaxaton'; valid: relaxation, static" --set "Load stepping/Strategy=relaxaton"
 check "$dir/valid.prm"              1 "Boundary conditions/Fixed regions:" --set "Boundary conditions/Fixed regions=0: w"
 # A probe off the membrane (on 2 ranks: every rank stops with it).
 check_mpi "$dir/valid.prm"          1 "Output/Probe points: point 1 does not lie on the membrane's reference surface" --set "Output/Probe points=0, 0, 0; 0, 0, 7"

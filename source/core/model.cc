@@ -808,6 +808,28 @@ namespace pneuma
   }
 
   void
+  Model::assemble_stiffest_tangent(const solvers::BorderedVector &u,
+                                   const double                   t)
+  {
+    current_time = t;
+    for (auto *i : with<Inertia>())
+      i->stiffest_tangent(true);
+    solvers::BorderedVector r = u;
+    tangent                   = 0.;
+    external                  = 0.;
+    assemble_into(u, t, r, &tangent, &external, coupling);
+    for (auto *i : with<Inertia>())
+      i->stiffest_tangent(false);
+    tangent_is_current = false;
+  }
+
+  void
+  Model::distribute_increment(LA::Vector &dx) const
+  {
+    update_distribution.distribute(dx);
+  }
+
+  void
   Model::vmult(const solvers::BorderedVector &x,
                solvers::BorderedVector       &y) const
   {

@@ -184,6 +184,7 @@ namespace pneuma
               }
           }
 
+          m.plain_law = m.law;
           if (slot->wrinkling)
             {
               check_input(slot->residual_stiffness < 1e-2,

@@ -548,6 +548,15 @@ namespace pneuma
       };
     } // namespace
 
+    const RegionMaterial &
+    MembraneAssembler::cell_material(const types::material_id id,
+                                     const bool               loaded) const
+    {
+      if (!loaded)
+        return form_finding_laws.at(id);
+      return plain_laws.empty() ? materials[id] : plain_laws.at(id);
+    }
+
     void
     MembraneAssembler::assemble(const LA::Vector                &u,
                                 const AffineConstraints<double> &constraints,
@@ -588,8 +597,7 @@ namespace pneuma
         const unsigned int cell_index = it - first;
         gather_cell_values(ctx, u, cell_index, scratch, copy);
         add_cell_points(ctx,
-                        ctx.loaded ? materials[cell->material_id()]
-                                   : form_finding_laws.at(cell->material_id()),
+                        cell_material(cell->material_id(), ctx.loaded),
                         cell,
                         cell_index,
                         scratch,

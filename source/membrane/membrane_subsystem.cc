@@ -18,6 +18,8 @@
 #include <pneuma/postprocess/membrane_fields.h>
 #include <pneuma/postprocess/membrane_probes.h>
 
+#include <algorithm>
+#include <array>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -381,6 +383,50 @@ namespace pneuma
     MembraneSubsystem::add_lumped_mass(LA::Vector &m) const
     {
       assembler->lumped_mass(m);
+    }
+
+    void
+    MembraneSubsystem::stiffest_tangent(const bool on)
+    {
+      std::map<types::material_id, RegionMaterial> plain;
+      if (on)
+        for (const auto id : mesh_ids)
+          {
+            RegionMaterial m = materials[id];
+            if (m.plain_law)
+              m.law = m.plain_law;
+            m.tension_field = nullptr;
+            plain[id]       = m;
+          }
+      assembler->set_plain_laws(std::move(plain));
+    }
+
+    void
+    MembraneSubsystem::largest_per_node(LA::Vector &v) const
+    {
+      // The three components of a support point are owned by one rank,
+      // and an owned dof lies on a locally owned cell.
+      const auto                          &fe = dofs.get_fe();
+      std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
+      std::vector<std::array<types::global_dof_index, 3>> node(
+        fe.base_element(0).n_dofs_per_cell());
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_indices(indices);
+            for (unsigned int i = 0; i < indices.size(); ++i)
+              node[fe.system_to_base_index(i).second]
+                  [fe.system_to_component_index(i).first] = indices[i];
+            for (const auto &n : node)
+              if (owned_dofs.is_element(n[0]))
+                {
+                  const double largest = std::max(
+                    {double(v[n[0]]), double(v[n[1]]), double(v[n[2]])});
+                  for (const auto i : n)
+                    v[i] = largest;
+                }
+          }
+      v.compress(VectorOperation::insert);
     }
 
     void

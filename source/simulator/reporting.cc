@@ -91,6 +91,8 @@ namespace pneuma
       cp.put("output/history", output.history_so_far());
       cp.put("output/last_written", last_written);
       stability.save_checkpoint(cp);
+      for (const auto &[name, s] : strategies)
+        s->save_summary(cp);
     });
     since_checkpoint.restart();
   }

@@ -43,6 +43,8 @@ namespace pneuma
     run.counters            = cp.get<strategies::RunCounters>("run/counters");
     run.mark_resumable();
     stability.load_checkpoint(cp);
+    for (const auto &[name, s] : strategies)
+      s->load_summary(cp);
     wall_offset  = cp.get<double>("run/wall_seconds");
     last_written = cp.get<unsigned int>("output/last_written");
     output.prepare_restart(comm,

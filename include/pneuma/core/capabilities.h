@@ -147,6 +147,28 @@ namespace pneuma
      */
     virtual void
     add_lumped_mass(LA::Vector &m) const = 0;
+    /**
+     * Replace the owned entries of @p v on this subsystem's translation
+     * dofs by their largest value over the components of each node (a
+     * fictitious mass the same in every direction of a node: dynamic
+     * relaxation). The default leaves @p v as it is.
+     */
+    virtual void
+    largest_per_node(LA::Vector &v) const
+    {
+      (void)v;
+    }
+    /**
+     * While @p on, assemble the tangent of the stiffest state each point
+     * can reach (a membrane's laws without tension field: slack points as
+     * stiff as taut ones), which bounds the stiffness along a relaxation
+     * (Model::assemble_stiffest_tangent). The default changes nothing.
+     */
+    virtual void
+    stiffest_tangent(const bool on)
+    {
+      (void)on;
+    }
   };
 
   /// What the linear solver may use of a subsystem.

@@ -428,6 +428,18 @@ namespace pneuma
     void
     solve_again(const solvers::BorderedVector &rhs,
                 solvers::BorderedVector       &du);
+    /**
+     * The tangent and border blocks at @p u and pseudo time @p t of the
+     * stiffest state each point can reach (Inertia::stiffest_tangent),
+     * into the model's tangent: the fictitious mass of dynamic relaxation.
+     * No assembly is current afterwards.
+     */
+    void
+    assemble_stiffest_tangent(const solvers::BorderedVector &u, const double t);
+    /// The dependent dofs of an increment @p dx (owned) follow their
+    /// masters (the update constraints: homogeneous), as after a solve.
+    void
+    distribute_increment(LA::Vector &dx) const;
     /// y = J x with the bordered Jacobian of the last assemble().
     void
     vmult(const solvers::BorderedVector &x, solvers::BorderedVector &y) const;

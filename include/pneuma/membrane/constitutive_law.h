@@ -96,6 +96,10 @@ namespace pneuma
       /// The law relaxed by tension field theory (the same object as law)
       /// where the region wrinkles, else null.
       std::shared_ptr<const TensionFieldLaw> tension_field;
+      /// The law without tension field theory (law itself where the region
+      /// does not wrinkle): the stiffest tangent a point can have (the
+      /// fictitious mass of dynamic relaxation).
+      std::shared_ptr<ConstitutiveLaw> plain_law;
       /// The warp direction whose projection onto the tangent plane is the
       /// frame's e_1 (zero: none, the frame follows the normal only).
       dealii::Tensor<1, 3> warp_direction;

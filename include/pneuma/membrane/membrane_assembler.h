@@ -121,12 +121,30 @@ namespace pneuma
         form_finding_laws = std::move(laws);
       }
 
+      /**
+       * The materials of @p laws (each region's with its plain law, no
+       * tension field: a slack or wrinkled point as stiff as a taut one)
+       * replace the regions' while loads act as usual; an empty map
+       * restores them. For dynamic relaxation's mass.
+       */
+      void
+      set_plain_laws(std::map<types::material_id, RegionMaterial> laws)
+      {
+        plain_laws = std::move(laws);
+      }
+
       /// The reference data of the current mesh (built at first use; the
       /// chambers integrate their wall terms on it).
       const ReferenceGeometry &
       reference_geometry() const;
 
     private:
+      /// The material a cell of material @p id is assembled with: the
+      /// form finding's (not @p loaded), the region's, or its plain law
+      /// (set_plain_laws()).
+      const RegionMaterial &
+      cell_material(const types::material_id id, const bool loaded) const;
+
       const geometry::SceneGenerator              &geometry;
       const MaterialRegions                       &materials;
       const loads::Loads                          &loads;
@@ -134,6 +152,7 @@ namespace pneuma
       const DoFHandler<2, 3>                      *dof_handler = nullptr;
       unsigned int                                 degree      = 1;
       std::map<types::material_id, RegionMaterial> form_finding_laws;
+      std::map<types::material_id, RegionMaterial> plain_laws;
       mutable std::unique_ptr<ReferenceGeometry>   reference;
       mutable LA::MatrixPositions                  positions;
     };

@@ -107,6 +107,10 @@ namespace pneuma
       void
       add_lumped_mass(LA::Vector &m) const override;
       void
+      largest_per_node(LA::Vector &v) const override;
+      void
+      stiffest_tangent(const bool on) override;
+      void
       add_near_null_space(
         const IndexSet                   &owned,
         std::vector<std::vector<double>> &modes) const override;

@@ -174,6 +174,22 @@ namespace pneuma
         (void)checkpoint;
         (void)vectors;
       }
+      /**
+       * What its summary entries count so far (add_summary()), stored in
+       * every checkpoint whichever segment runs, so that a restart reports
+       * the counts of strategies that ran before it (the relaxation's
+       * iterations, the form finding's). Restored by load_summary().
+       */
+      virtual void
+      save_summary(Checkpoint &checkpoint) const
+      {
+        (void)checkpoint;
+      }
+      virtual void
+      load_summary(const Checkpoint &checkpoint)
+      {
+        (void)checkpoint;
+      }
       /// Restore it before run() continues the segment; @p vectors are the
       /// ones saved (restored by the model), in the same order.
       virtual void

@@ -1,3 +1,4 @@
+#include <pneuma/core/checkpoint.h>
 #include <pneuma/core/input_error.h>
 #include <pneuma/core/model.h>
 #include <pneuma/membrane/membrane_subsystem.h>
@@ -137,6 +138,21 @@ namespace pneuma
                     newton_iterations,
                     counts);
       row.add(run, "form_finding_last_move", "", last_change, counts);
+    }
+
+    void
+    FormFinding::save_summary(Checkpoint &checkpoint) const
+    {
+      checkpoint.put("form finding/newton_iterations", newton_iterations);
+      checkpoint.put("form finding/last_move", last_change);
+    }
+
+    void
+    FormFinding::load_summary(const Checkpoint &checkpoint)
+    {
+      newton_iterations =
+        checkpoint.get<unsigned int>("form finding/newton_iterations");
+      last_change = checkpoint.get<double>("form finding/last_move");
     }
 
     PNEUMA_REGISTER_STRATEGY(FormFinding,

@@ -264,6 +264,11 @@ namespace pneuma
                 << ", so the load cannot grow further under load "
                    "control (use Load stepping/Control = arc-length, "
                    "or volume or gas-amount control)";
+          else if (a.from_unstressed)
+            msg << "; the step starts from the unstressed state, which "
+                   "has no stiffness (a flaccid start): relax the first "
+                   "stage instead (Load stepping/Strategy = relaxation, "
+                   "static)";
           msg << ". The last converged state (t = " << a.t_old
               << ") is written.";
           walk.result.exit_code = 2;

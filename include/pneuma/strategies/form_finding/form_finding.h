@@ -56,6 +56,11 @@ namespace pneuma
       /// The Newton iterations of the updates and the last move.
       void
       add_summary(Statistics &row) const override;
+      /// Those two, for a restart after the form finding.
+      void
+      save_summary(Checkpoint &checkpoint) const override;
+      void
+      load_summary(const Checkpoint &checkpoint) override;
 
     private:
       bool         on          = false;
