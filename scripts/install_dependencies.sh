@@ -1,6 +1,6 @@
 #!/bin/bash
 # Installs what pneuma needs on Debian 12 (deal.II 9.4 with Trilinos, p4est,
-# MPI and MUMPS; numdiff for the tests; Gmsh for meshes; ccache;
+# MPI and MUMPS; nlohmann's JSON library for summary.json; numdiff for the tests; Gmsh for meshes; ccache;
 # matplotlib for the chamber plots; OpenBLAS, which makes the MUMPS factorizations 5x faster than the
 # reference BLAS Debian selects otherwise).
 # Does nothing when everything is already there. VTK's Python module (for
@@ -14,6 +14,7 @@
 # python3-vtk9 by python3-paraview).
 set -euo pipefail
 packages=(build-essential cmake ccache libdeal.ii-dev libmumps-dev libmetis-dev numdiff
+          nlohmann-json3-dev
           libopenblas0-pthread
           gmsh openmpi-bin time python3 python3-matplotlib
           clang-format)

@@ -3,6 +3,8 @@
 #include <pneuma/core/input_error.h>
 #include <pneuma/core/output.h>
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -17,47 +19,44 @@ namespace pneuma
 
   namespace
   {
-    /// A number as JSON (non-finite values become null).
-    std::string
+    /// summary.json's writer (nlohmann's JSON for Modern C++, Debian's
+    /// nlohmann-json3-dev), keeping the entries in the order added.
+    using Json = nlohmann::ordered_json;
+
+    /// A number as summary.json keeps it: integers exact, other values to
+    /// 10 significant digits; non-finite values become null.
+    Json
     json_number(const double v, const bool integer)
     {
       if (!std::isfinite(v))
-        return "null";
-      std::ostringstream s;
+        return nullptr;
       if (integer)
-        s << static_cast<long long>(std::llround(v));
-      else
-        s << std::setprecision(10) << v;
-      return s.str();
+        return static_cast<long long>(std::llround(v));
+      char text[32];
+      std::snprintf(text, sizeof(text), "%.10g", v);
+      return std::strtod(text, nullptr);
     }
 
-    std::string
+    Json
     json_value(const Statistics::Entry &e)
     {
       if (e.values.size() == 1)
         return json_number(e.values[0], e.integer);
-      std::string s = "[";
-      for (unsigned int c = 0; c < e.values.size(); ++c)
-        s += (c ? ", " : "") + json_number(e.values[c], e.integer);
-      return s + "]";
+      Json array = Json::array();
+      for (const double v : e.values)
+        array.push_back(json_number(v, e.integer));
+      return array;
     }
 
-    std::string
-    json_string(const std::string &text)
+    /// Write @p j to @p file; false if the write failed. Invalid UTF-8
+    /// in a message (a file name) is replaced, never an exception.
+    bool
+    write_json(const std::string &file, const Json &j)
     {
-      std::string s = "\"";
-      for (const char c : text)
-        {
-          if (c == '"' || c == '\\')
-            s += '\\';
-          if (c == '\n')
-            {
-              s += "\\n";
-              continue;
-            }
-          s += c;
-        }
-      return s + "\"";
+      std::ofstream out(file);
+      out << j.dump(2, ' ', false, Json::error_handler_t::replace) << '\n';
+      out.flush();
+      return static_cast<bool>(out);
     }
     /**
      * Remove the files a run writes into @p directory (solution_*,
@@ -103,9 +102,10 @@ namespace pneuma
         remove_run_outputs(directory);
         fs::remove(directory + "/parameters.prm", ec);
       }
-    std::ofstream json(directory + "/summary.json");
-    json << "{\n  \"exit_code\": 1,\n  \"message\": " << json_string(message)
-         << "\n}\n";
+    Json j;
+    j["exit_code"] = 1;
+    j["message"]   = message;
+    write_json(directory + "/summary.json", j);
   }
 
   void
@@ -281,6 +281,33 @@ namespace pneuma
     start_history(comm, history_so_far);
   }
 
+  namespace
+  {
+    /// The entries of group @p array, one object per index.
+    Json
+    summary_array(const Statistics &row, const std::string &array)
+    {
+      std::map<unsigned int, std::vector<const Statistics::Entry *>> items;
+      std::string                                                    index_key;
+      for (const auto &e : row.entries())
+        if ((e.uses & Statistics::summary) && e.group.array == array)
+          {
+            items[e.group.index].push_back(&e);
+            index_key = e.group.index_key;
+          }
+      Json list = Json::array();
+      for (const auto &[index, entries] : items)
+        {
+          Json item;
+          item[index_key] = index;
+          for (const auto *e : entries)
+            item[e->name] = json_value(*e);
+          list.push_back(item);
+        }
+      return list;
+    }
+  } // namespace
+
   void
   OutputWriter::summary(const Statistics  &row,
                         const std::string &message,
@@ -288,14 +315,7 @@ namespace pneuma
   {
     if (!root)
       return;
-    std::ofstream json(output_directory + "/summary.json");
-    json << "{";
-    bool       first = true;
-    const auto key   = [&](const std::string &k) -> std::ostream   &{
-      json << (first ? "\n  " : ",\n  ") << json_string(k) << ": ";
-      first = false;
-      return json;
-    };
+    Json j = Json::object();
     // Top-level values, then one array per group, in the order added.
     std::vector<std::string> arrays;
     for (const auto &e : row.entries())
@@ -304,64 +324,29 @@ namespace pneuma
           continue;
         if (e.group.array.empty())
           {
-            key(e.name) << json_value(e);
+            j[e.name] = json_value(e);
             if (e.name == "exit_code")
-              key("message") << json_string(message);
+              j["message"] = message;
           }
         else if (std::find(arrays.begin(), arrays.end(), e.group.array)
                  == arrays.end())
           arrays.push_back(e.group.array);
       }
     for (const auto &array : arrays)
-      {
-        std::map<unsigned int, std::vector<const Statistics::Entry *>> items;
-        std::string index_key;
-        for (const auto &e : row.entries())
-          if ((e.uses & Statistics::summary) && e.group.array == array)
-            {
-              items[e.group.index].push_back(&e);
-              index_key = e.group.index_key;
-            }
-        key(array) << "[";
-        bool first_item = true;
-        for (const auto &[index, entries] : items)
-          {
-            json << (first_item ? "\n    {" : ",\n    {")
-                 << json_string(index_key) << ": " << index;
-            first_item = false;
-            for (const auto *e : entries)
-              json << ", " << json_string(e->name) << ": " << json_value(*e);
-            json << "}";
-          }
-        json << (items.empty() ? "]" : "\n  ]");
-      }
+      j[array] = summary_array(row, array);
     // Units of every value that has one.
     std::map<std::string, std::string> units;
     for (const auto &e : row.entries())
       if ((e.uses & Statistics::summary) && !e.unit.empty())
         units[e.group.array.empty() ? e.name : e.group.array + "." + e.name] =
           e.unit;
-    key("units") << "{";
-    bool first_unit = true;
-    for (const auto &[name, unit] : units)
-      {
-        json << (first_unit ? "" : ", ") << json_string(name) << ": "
-             << json_string(unit);
-        first_unit = false;
-      }
-    json << "}";
-    key("timings") << "{";
-    bool first_timer = true;
+    j["units"]   = Json(units);
+    Json timings = Json::object();
     for (const auto &[name, seconds] :
          timer.get_summary_data(TimerOutput::total_wall_time))
-      {
-        json << (first_timer ? "\n    " : ",\n    ") << json_string(name)
-             << ": " << json_number(seconds, false);
-        first_timer = false;
-      }
-    json << "\n  }\n}\n";
-    json.flush();
-    if (!json)
+      timings[name] = json_number(seconds, false);
+    j["timings"] = timings;
+    if (!write_json(output_directory + "/summary.json", j))
       throw WriteError(output_directory + "/summary.json");
   }
 
