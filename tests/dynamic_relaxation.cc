@@ -95,30 +95,6 @@ namespace
   }
 
   Settings
-  airbag(const unsigned int refinements)
-  {
-    const std::string L = "0.848528", c = "0.424264";
-    Settings          s = {{"Geometry/Type", "gmsh"},
-                           {"Geometry/gmsh/Mesh file",
-                            std::string(PNEUMA_SOURCE_DIR)
-                              + "/meshes/square_airbag.msh"},
-                           {"Geometry/Global refinements", std::to_string(refinements)},
-                           {"Boundary conditions/Fixed points",
-                            "0,0,0: xyz; " + L + ",0,0: yz; 0," + L + ",0: z"},
-                           {"Loads/Pressure regions", "1, 2"},
-                           {"Loads/Pressure/Function expression", "5000*t"},
-                           {"Output/Monitor points", c + "," + c + ",0"}};
-    for (const std::string region : {"1", "2"})
-      for (const auto &[entry, value] :
-           Settings{{"Thickness", "6e-4"},
-                    {"Wrinkling", "tension field"},
-                    {"Saint Venant-Kirchhoff/Young's modulus", "5.88e8"},
-                    {"Saint Venant-Kirchhoff/Poisson's ratio", "0.4"}})
-        s.push_back({"Materials/Region " + region + "/" + entry, value});
-    return s;
-  }
-
-  Settings
   relaxed_first(Settings s)
   {
     s.insert(s.end(),
@@ -130,26 +106,28 @@ namespace
   bool
   square_airbag()
   {
-    const auto n  = pneuma_test::run(airbag(0));
-    const auto r  = pneuma_test::run(relaxed_first(airbag(0)));
-    bool       ok = print(n.exit_code == 0 && r.exit_code == 0,
+    const auto n = pneuma_test::run(pneuma_test::square_airbag(0));
+    const auto r =
+      pneuma_test::run(relaxed_first(pneuma_test::square_airbag(0)));
+    bool ok = print(n.exit_code == 0 && r.exit_code == 0,
                     "airbag 4 x 4: Newton alone and relaxation then Newton "
-                          "converge");
+                    "converge");
     if (ok)
       ok = pneuma_test::check("airbag 4 x 4: rise relaxed first against "
                               "Newton's [m]",
                               r.summary.get_vector("m0_u")[2],
                               n.summary.get_vector("m0_u")[2],
                               1e-6);
-    const auto fails = pneuma_test::run(airbag(2));
+    const auto fails = pneuma_test::run(pneuma_test::square_airbag(2));
     ok               = print(fails.exit_code == 2
                  && fails.message.find("Strategy = relaxation")
                       != std::string::npos,
                "airbag 16 x 16: Newton alone fails (exit 2) and proposes "
                              "the relaxation")
          && ok;
-    const auto fine = pneuma_test::run(relaxed_first(airbag(2)));
-    ok              = print(fine.exit_code == 0,
+    const auto fine =
+      pneuma_test::run(relaxed_first(pneuma_test::square_airbag(2)));
+    ok = print(fine.exit_code == 0,
                "airbag 16 x 16: relaxation then Newton converges")
          && ok;
     return fine.exit_code == 0

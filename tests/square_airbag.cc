@@ -22,29 +22,10 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const std::string                        L = "0.848528", c = "0.424264";
-  const std::string                        material = "Materials/Region ";
-  bool                                     ok       = true;
+  bool                                     ok = true;
   for (const unsigned int refinements : {0u, 1u})
     {
-      pneuma_test::Settings settings = {
-        {"Geometry/Type", "gmsh"},
-        {"Geometry/gmsh/Mesh file",
-         std::string(PNEUMA_SOURCE_DIR) + "/meshes/square_airbag.msh"},
-        {"Geometry/Global refinements", std::to_string(refinements)},
-        {"Boundary conditions/Fixed points",
-         "0,0,0: xyz; " + L + ",0,0: yz; 0," + L + ",0: z"},
-        {"Loads/Pressure regions", "1, 2"},
-        {"Loads/Pressure/Function expression", "5000*t"},
-        {"Output/Monitor points", c + "," + c + ",0"}};
-      for (const std::string region : {"1", "2"})
-        for (const auto &[entry, value] : pneuma_test::Settings{
-               {"Thickness", "6e-4"},
-               {"Wrinkling", "tension field"},
-               {"Saint Venant-Kirchhoff/Young's modulus", "5.88e8"},
-               {"Saint Venant-Kirchhoff/Poisson's ratio", "0.4"}})
-          settings.push_back({material + region + "/" + entry, value});
-      const auto        s     = pneuma_test::run(settings);
+      const auto s = pneuma_test::run(pneuma_test::square_airbag(refinements));
       const std::string cells = std::to_string(4u << refinements) + " x "
                                 + std::to_string(4u << refinements)
                                 + " cells per sheet";

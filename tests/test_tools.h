@@ -213,6 +213,38 @@ namespace pneuma_test
    * controlling it (its control comes from the caller), one stage to
    * t = 1 from increments of 0.1, with the stability check.
    */
+  /**
+   * The square airbag of Contri & Schrefler (1988): two flat square sheets
+   * of diagonal 1.2 m seamed along their edges (meshes/square_airbag.msh,
+   * 4 x 4 Q1 cells per sheet, @p refinements global refinements),
+   * E = 588 MPa, nu = 0.4, t = 0.6 mm, tension-field wrinkling, inflated
+   * from flat by p = 5000 t Pa; only the rigid-body motions held; the
+   * centre monitored.
+   */
+  inline Settings
+  square_airbag(const unsigned int refinements)
+  {
+    const std::string L = "0.848528", c = "0.424264";
+    Settings          s = {{"Geometry/Type", "gmsh"},
+                           {"Geometry/gmsh/Mesh file",
+                            std::string(PNEUMA_SOURCE_DIR)
+                              + "/meshes/square_airbag.msh"},
+                           {"Geometry/Global refinements", std::to_string(refinements)},
+                           {"Boundary conditions/Fixed points",
+                            "0,0,0: xyz; " + L + ",0,0: yz; 0," + L + ",0: z"},
+                           {"Loads/Pressure regions", "1, 2"},
+                           {"Loads/Pressure/Function expression", "5000*t"},
+                           {"Output/Monitor points", c + "," + c + ",0"}};
+    for (const std::string region : {"1", "2"})
+      for (const auto &[entry, value] :
+           Settings{{"Thickness", "6e-4"},
+                    {"Wrinkling", "tension field"},
+                    {"Saint Venant-Kirchhoff/Young's modulus", "5.88e8"},
+                    {"Saint Venant-Kirchhoff/Poisson's ratio", "0.4"}})
+        s.push_back({"Materials/Region " + region + "/" + entry, value});
+    return s;
+  }
+
   inline Settings
   two_connected_balloons()
   {
