@@ -11,6 +11,7 @@
 #include <pneuma/core/collective_error.h>
 #include <pneuma/core/input_error.h>
 #include <pneuma/core/interrupt.h>
+#include <pneuma/core/mpi_start.h>
 #include <pneuma/core/output.h>
 #include <pneuma/core/threads.h>
 #include <pneuma/simulator/simulator.h>
@@ -45,6 +46,7 @@ namespace
 int
 main(int argc, char **argv)
 {
+  pneuma::prepare_mpi_start();
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const MPI_Comm                           comm = MPI_COMM_WORLD;
   const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;

@@ -12,7 +12,7 @@
 //    to 1.25 kPa then Newton to 5 kPa, the same rise as Newton alone
 //    (1e-6); on 16 x 16 cells per sheet Newton alone fails (exit 2, and
 //    the message proposes the relaxation), relaxation then Newton inflates
-//    it to within 0.5 % of the literature's 0.217 m.
+//    it to within 0.5 % of the literature's 0.217 m (on 1 rank only).
 
 #include "test_tools.h"
 
@@ -118,6 +118,10 @@ namespace
                               r.summary.get_vector("m0_u")[2],
                               n.summary.get_vector("m0_u")[2],
                               1e-6);
+    // The fine mesh (36 of the test's 47 s) on 1 rank only: the 2-rank run
+    // checks the same relaxation and hand-over on the cases above.
+    if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+      return ok;
     const auto fails = pneuma_test::run(pneuma_test::square_airbag(2));
     ok               = print(fails.exit_code == 2
                  && fails.message.find("Strategy = relaxation")
