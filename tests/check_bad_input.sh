@@ -94,8 +94,15 @@ check "$dir/valid.prm"              2 "the form finding did not converge in 2 up
 check "$dir/valid.prm"              1 "Dynamic relaxation/Residual tolerance: must be in (0, 1)" --set "Load stepping/Strategy=relaxation" --set "Dynamic relaxation/Residual tolerance=2"
 check "$dir/valid.prm"              1 "Mass safety factor" --set "Load stepping/Strategy=relaxation" --set "Dynamic relaxation/Mass safety factor=0.5"
 check_mpi "$dir/valid.prm"          2 "the dynamic relaxation failed: no convergence in 3 iterations (Dynamic relaxation/Maximum iterations" --set "Load stepping/Strategy=relaxation" --set "Dynamic relaxation/Maximum iterations=3" --set "Loads/Pressure/Function expression=1000*t"
-check "$dir/valid.prm"              1 "Load stepping/Strategy: unknown 'relaxaton'; valid: relaxation, static" --set "Load stepping/Strategy=relaxaton"
+check "$dir/valid.prm"              1 "Load stepping/Strategy: unknown 'relaxaton'; valid: explicit, relaxation, static" --set "Load stepping/Strategy=relaxaton"
 check "$dir/valid.prm"              1 "Boundary conditions/Fixed regions:" --set "Boundary conditions/Fixed regions=0: w"
+# Explicit dynamics: no mass, a damping ratio without its frequency, a
+# time step above the stable one, a stage that needs too many steps.
+check "$dir/valid.prm"              1 "Load stepping/Strategy: explicit dynamics needs a mass on every free unknown; 123 have none" --set "Load stepping/Strategy=explicit"
+check_mpi "$dir/valid.prm"          1 "Load stepping/Strategy: explicit dynamics needs a mass on every free unknown; 123 have none" --set "Load stepping/Strategy=explicit"
+check "$dir/valid.prm"              1 "Explicit dynamics/Damping frequency: a Damping ratio needs the frequency" --set "Explicit dynamics/Damping ratio=0.1"
+check "$dir/valid.prm"              1 "Explicit dynamics/Time step: the time step 1 s is above the stable step 6.0268e-06 s" --set "Load stepping/Strategy=explicit" --set "Materials/Region 0/Density=1000" --set "Explicit dynamics/Time step=1"
+check_mpi "$dir/valid.prm"          1 "Explicit dynamics/Maximum steps: stage 1 (to t = 1) needs about 184362 steps" --set "Load stepping/Strategy=explicit" --set "Materials/Region 0/Density=1000" --set "Explicit dynamics/Maximum steps=1000"
 # A probe off the membrane (on 2 ranks: every rank stops with it).
 check_mpi "$dir/valid.prm"          1 "Output/Probe points: point 1 does not lie on the membrane's reference surface" --set "Output/Probe points=0, 0, 0; 0, 0, 7"
 check "$dir/valid.prm"              1 "Output/Probe points:" --set "Output/Probe points=0, 0"

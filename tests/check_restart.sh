@@ -8,7 +8,9 @@
 # step's increment, so the restarted step starts from the same predictor
 # (the load-step extrapolation; the secant of an arc-length stage). The
 # square airbag stops after its relaxed first stage and restarts into the
-# static one (the relaxation's counts come back with the checkpoint).
+# static one (the relaxation's counts come back with the checkpoint). The
+# vibrating membrane stops in its explicit stage and continues with the
+# checkpoint's velocity, step and energies.
 # Usage: check_restart.sh PNEUMA_BINARY SOURCE_DIR [PYTHON]
 pneuma="$1" src="$2" python="${3:-/usr/bin/python3}"
 compare="$python $src/tests/compare_summaries.py"
@@ -41,7 +43,9 @@ for case in \
   "liquid_gas 2 2 3 $src/tests/chambers_liquid_gas_mpi.prm" \
   "liquid_gas 2 1 5 $src/tests/chambers_liquid_gas_mpi.prm" \
   "contact_patch 2 2 1 $src/tests/contact_patch_mpi.prm" \
-  "sphere_arc_length 1 1 6 $src/parameter_files/sphere_arc_length.prm"; do
+  "sphere_arc_length 1 1 6 $src/parameter_files/sphere_arc_length.prm" \
+  "membrane_vibration 1 1 50 $src/parameter_files/membrane_vibration.prm" \
+  "membrane_vibration 2 2 50 $src/parameter_files/membrane_vibration.prm"; do
   set -- $case
   name="$1" first="$2" second="$3" stop="$4" prm="$5"
   full="$name-$first-full" part="$name-$first-$second-restart"

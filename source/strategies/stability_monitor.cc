@@ -91,7 +91,11 @@ namespace pneuma
           if (r.energy_form)
             last = r;
           if (!r.computed)
-            out << "  stability: " << r.note << std::endl;
+            {
+              // Explicit dynamics' rows are not equilibria: no note.
+              if (!r.note.empty())
+                out << "  stability: " << r.note << std::endl;
+            }
           else if (!r.energy_form)
             out << "  stability: under prescribed pressures "
                 << r.negative_field << " negative eigenvalue(s); " << r.note

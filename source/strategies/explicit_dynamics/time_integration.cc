@@ -1,0 +1,205 @@
+/**
+ * @file
+ * The central-difference steps of explicit dynamics (strategies/
+ * explicit_dynamics/explicit_dynamics.h): the update, the energies, the
+ * stable step.
+ */
+
+#include <pneuma/core/input_error.h>
+#include <pneuma/core/interrupt.h>
+#include <pneuma/core/model.h>
+#include <pneuma/strategies/explicit_dynamics/explicit_dynamics.h>
+#include <pneuma/strategies/gershgorin.h>
+#include <pneuma/strategies/run.h>
+#include <pneuma/strategies/stages.h>
+
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+#include <utility>
+
+namespace pneuma
+{
+  namespace strategies
+  {
+    using namespace dealii;
+    using solvers::BorderedVector;
+
+    namespace
+    {
+      /// A number in a message, to 6 significant digits.
+      std::string
+      as_text(const double x)
+      {
+        std::ostringstream out;
+        out << x;
+        return out.str();
+      }
+    } // namespace
+
+    double
+    stable_time_step(const Model &model, const LA::Vector &inverse_mass)
+    {
+      const LA::Vector g       = stiffness_row_sums(model);
+      double           largest = 0.;
+      for (const auto row : model.locally_owned())
+        largest = std::max(largest, g[row] * inverse_mass[row]);
+      largest = Utilities::MPI::max(largest, model.mpi_communicator());
+      return largest > 0. ? 2. / std::sqrt(largest)
+                          : std::numeric_limits<double>::infinity();
+    }
+
+    double
+    ExplicitDynamics::estimate_step(Model                &model,
+                                    const BorderedVector &x,
+                                    const double          t)
+    {
+      BorderedVector r = x;
+      model.assemble(x, t, r);
+      ++motion.estimates;
+      motion.estimated_at = motion.steps;
+      ++total_estimates;
+      return stable_time_step(model, inverse_mass);
+    }
+
+    namespace
+    {
+      /// v^T M v with the inverse mass (zero entries: no mass).
+      double
+      mass_norm(const LA::Vector &v, const LA::Vector &inverse_mass)
+      {
+        double sum = 0.;
+        auto   mi  = inverse_mass.begin();
+        for (const double vi : v)
+          {
+            if (*mi > 0.)
+              sum += vi * vi / *mi;
+            ++mi;
+          }
+        return Utilities::MPI::sum(sum, v.get_mpi_communicator());
+      }
+
+      /// v_{n+1}^T M v_{n+1} with v_{n+1} = v_{n+1/2} - dt/2 M^-1 r_{n+1}:
+      /// the kinetic energy at the step, where W is (the damping's half
+      /// step left out).
+      double
+      full_step_norm(const LA::Vector &v,
+                     const LA::Vector &r,
+                     const LA::Vector &inverse_mass,
+                     const double      dt)
+      {
+        double sum = 0.;
+        auto   mi  = inverse_mass.begin();
+        auto   ri  = r.begin();
+        for (const double vi : v)
+          {
+            if (*mi > 0.)
+              {
+                const double v_full = vi - 0.5 * dt * *mi * *ri;
+                sum += v_full * v_full / *mi;
+              }
+            ++mi;
+            ++ri;
+          }
+        return Utilities::MPI::sum(sum, v.get_mpi_communicator());
+      }
+    } // namespace
+
+    void
+    ExplicitDynamics::print_progress(Run         &run,
+                                     const double t,
+                                     const double dt) const
+    {
+      // Steps per second of wall time since the stage started, and the
+      // wall time the rest of the stage needs at that rate.
+      const double wall = run.wall_clock.wall_time() - stage_start_wall;
+      const double rate = (motion.steps - stage_start_steps) / wall;
+      run.out << "  step " << std::setw(8) << total_steps
+              << ": t = " << std::scientific << std::setprecision(4) << t
+              << " s, dt = " << dt << " s, kinetic energy " << motion.kinetic
+              << " J, " << std::defaultfloat << std::setprecision(3) << rate
+              << " steps/s, " << (stage_end - t) / dt / rate
+              << " s to the stage's end" << std::setprecision(6) << std::endl;
+    }
+
+    std::string
+    ExplicitDynamics::integrate(Run            &run,
+                                BorderedVector &x,
+                                double         &t,
+                                const double    t_end)
+    {
+      Model            &model = run.model;
+      BorderedVector    r = x, r_next = x;
+      LA::Vector        dx = model.make_field(), &v = motion.velocity.field;
+      const std::string start = model.begin_step(t, x);
+      if (!start.empty())
+        return start;
+      if (model.n_border() > 0)
+        x.border = model.border_for(x.field, t);
+      model.assemble_residual(x, t, r);
+      while (!run.stages.finished(t, t_end))
+        {
+          if (motion.steps % settings.estimate_every == 0
+              && motion.estimated_at != motion.steps)
+            motion.stable_step = estimate_step(model, x, t);
+          if (settings.time_step > motion.stable_step)
+            {
+              const std::string what =
+                "the time step " + as_text(settings.time_step)
+                + " s is above the stable step " + as_text(motion.stable_step)
+                + " s at t = " + as_text(t);
+              return what + " (Explicit dynamics/Time step)";
+            }
+          // Equal steps to t_end (an output time or the stage's end): a
+          // short step to meet it, then long ones, would let the
+          // variable-step scheme pump energy.
+          const double allowed = settings.time_step > 0.
+                                   ? settings.time_step
+                                   : settings.safety * motion.stable_step;
+          const double dt =
+            (t_end - t) / std::max(1., std::ceil((t_end - t) / allowed - 1e-9));
+          // The velocity at the half step (mass damping centred).
+          const double dt_mid = 0.5 * (motion.previous_step + dt);
+          const double c      = 0.5 * alpha * dt_mid;
+          auto         mi     = inverse_mass.begin();
+          auto         ri     = r.field.begin();
+          for (auto &vi : v)
+            vi = ((1. - c) * vi - dt_mid * *mi++ * *ri++) / (1. + c);
+          const double vMv = mass_norm(v, inverse_mass);
+          motion.damping += alpha * dt_mid * vMv;
+          dx.equ(dt, v);
+          model.distribute_increment(dx);
+          x.field += dx;
+          t += dt;
+          std::string message = model.begin_step(t, x);
+          if (!message.empty())
+            return message;
+          if (model.n_border() > 0)
+            x.border = model.border_for(x.field, t);
+          model.assemble_residual(x, t, r_next);
+          motion.work += 0.5 * (dx * r.field + dx * r_next.field);
+          std::swap(r, r_next);
+          motion.kinetic = 0.5 * full_step_norm(v, r.field, inverse_mass, dt);
+          if (!std::isfinite(r.l2_norm()) || !std::isfinite(motion.kinetic))
+            return "the motion is not finite at t = " + as_text(t)
+                   + " (an unstable step, or a load that is not finite)";
+          model.commit_step(t, x);
+          motion.scale         = std::max({motion.scale,
+                                           motion.kinetic,
+                                           std::abs(motion.work),
+                                           motion.damping});
+          motion.previous_step = dt;
+          smallest_step = smallest_step > 0. ? std::min(smallest_step, dt) : dt;
+          ++motion.steps;
+          ++total_steps;
+          if (total_steps % settings.print_every == 0)
+            print_progress(run, t, dt);
+          if (total_steps % 256 == 0
+              && interrupt_signal(model.mpi_communicator()))
+            return "";
+        }
+      return "";
+    }
+  } // namespace strategies
+} // namespace pneuma

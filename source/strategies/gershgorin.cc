@@ -1,0 +1,85 @@
+#include <deal.II/lac/full_matrix.h>
+
+#include <pneuma/core/model.h>
+#include <pneuma/strategies/gershgorin.h>
+
+#include <cmath>
+#include <vector>
+
+namespace pneuma
+{
+  namespace strategies
+  {
+    using namespace dealii;
+
+    namespace
+    {
+      /// Row sums of |K| over the owned rows of the tangent's field block
+      /// (@p sums: one per owned row, in order).
+      void
+      add_row_sums(const LA::SparseMatrix &K,
+                   const IndexSet         &owned,
+                   std::vector<double>    &sums)
+      {
+        unsigned int k = 0;
+        for (const auto row : owned)
+          {
+            for (auto e = K.begin(row); e != K.end(row); ++e)
+              sums[k] += std::abs(e->value());
+            ++k;
+          }
+      }
+
+      /// The border's bound (see stiffness_row_sums()). Unknowns without a
+      /// field column or row (a prescribed pressure) add nothing.
+      void
+      add_border_sums(const solvers::BorderCoupling &coupling,
+                      const IndexSet                &owned,
+                      std::vector<double>           &sums)
+      {
+        const unsigned int n = coupling.size();
+        if (n == 0)
+          return;
+        FullMatrix<double> D_inverse(n, n);
+        D_inverse.copy_from(coupling.D);
+        try
+          {
+            D_inverse.gauss_jordan();
+          }
+        catch (...)
+          {
+            return; // a singular border block couples only through K
+          }
+        std::vector<double> c_norm(n, 0.);
+        for (unsigned int l = 0; l < n; ++l)
+          if (coupling.has_C[l])
+            c_norm[l] = coupling.C[l].l1_norm();
+        for (unsigned int k = 0; k < n; ++k)
+          if (coupling.has_B[k])
+            {
+              double weight = 0.;
+              for (unsigned int l = 0; l < n; ++l)
+                weight += std::abs(D_inverse(k, l)) * c_norm[l];
+              unsigned int j = 0;
+              for (const auto row : owned)
+                sums[j++] += std::abs(coupling.B[k][row]) * weight;
+            }
+      }
+    } // namespace
+
+    LA::Vector
+    stiffness_row_sums(const Model &model)
+    {
+      const IndexSet     &owned = model.locally_owned();
+      std::vector<double> sums(owned.n_elements(), 0.);
+      add_row_sums(model.tangent_matrix(), owned, sums);
+      add_border_sums(model.border_coupling(), owned, sums);
+      LA::Vector   g = model.make_field();
+      unsigned int k = 0;
+      for (const auto row : owned)
+        g[row] = sums[k++];
+      g.compress(VectorOperation::insert);
+      return g;
+    }
+  } // namespace strategies
+} // namespace pneuma

@@ -1,0 +1,204 @@
+// Explicit dynamics by central differences (strategies/explicit_dynamics,
+// doc/theory.md "Explicit dynamics"), on 1 and 2 ranks, on the
+// pretensioned square membrane of tests/eigen_analysis (side a = 1 m,
+// h = 1 mm, St. Venant-Kirchhoff E = 1 MPa, nu = 0.3, rho = 1000 kg/m^3,
+// edges pulled out by 1 %: N = E h/(1 - nu) ((1.01^2 - 1)/2); Q2 on 4 x 4
+// cells). Stage 1 pulls the edges, stage 2 loads it by a pressure rising
+// to 1 Pa (both static); at t = 2 the pressure is released and stage 3
+// (explicit) lets it vibrate. The monitor at (1/6, 1/6) (snapped to the
+// vertex (1/4, 1/4)) lies near the nodal lines of the (1,3) and (3,1)
+// modes, which the static shape holds by 1/15 each:
+//  - undamped, 20 periods: the period (a straight line fitted through the
+//    zero crossings of the monitor's motion) against the closed form of
+//    the (1,1) mode, f = sqrt(N/(rho h)) sqrt(2)/(2a) (0.5 %); the energy
+//    balance T + W = 0 (W: the work of the residual forces) within 1e-3
+//    of the largest energy at every row;
+//  - mass-proportional damping of ratio 0.05 at f: every mode decays as
+//    exp(-alpha t/2), alpha = 2 zeta omega; the mean ratio of successive
+//    maxima of the monitor against exp(-alpha T_d/2) (2 %);
+//  - a Time step above the stable estimate is refused naming the entry
+//    (exit 1).
+
+#include "test_tools.h"
+
+#include <pneuma/core/input_error.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace
+{
+  constexpr double E = 1e6, nu = 0.3, h = 1e-3, rho = 1000., eps = 0.01;
+  const double     N = E * h / (1. - nu) * ((1. + eps) * (1. + eps) - 1.) / 2.;
+  const double     frequency = std::sqrt(N / (rho * h)) * std::sqrt(2.) / 2.;
+
+  pneuma_test::Settings
+  vibrating_square(const double damping_ratio, const double end)
+  {
+    const std::string e = pneuma_test::number(eps);
+    return {
+      {"Geometry/Type", "square"},
+      {"Geometry/square/Side length", "1"},
+      {"Geometry/Global refinements", "2"},
+      {"Discretisation/Polynomial degree", "2"},
+      {"Materials/Region 0/Thickness", pneuma_test::number(h)},
+      {"Materials/Region 0/Density", pneuma_test::number(rho)},
+      {"Materials/Region 0/Saint Venant-Kirchhoff/Young's modulus",
+       pneuma_test::number(E)},
+      {"Materials/Region 0/Saint Venant-Kirchhoff/Poisson's ratio",
+       pneuma_test::number(nu)},
+      {"Boundary conditions/Prescribed displacement boundaries", "0, 1, 2, 3"},
+      {"Boundary conditions/Prescribed displacement/Function expression",
+       e + "*x*min(t, 1); " + e + "*y*min(t, 1); 0"},
+      {"Loads/Pressure/Function expression", "if(t <= 2, max(t - 1, 0), 0)"},
+      {"Load stepping/Stage end times", "1, 2, " + pneuma_test::number(end)},
+      {"Load stepping/Strategy", "static, static, explicit"},
+      {"Explicit dynamics/Output interval", "0.01"},
+      {"Explicit dynamics/Damping ratio", pneuma_test::number(damping_ratio)},
+      {"Explicit dynamics/Damping frequency", pneuma_test::number(frequency)},
+      {"Output/Monitor points", "0.1666666666666667, 0.1666666666666667, 0"}};
+  }
+
+  struct Signal
+  {
+    std::vector<double> t, u;
+  };
+
+  /// The monitor's normal displacement in the free vibration (t > 2).
+  Signal
+  centre(const pneuma::RunResult &s)
+  {
+    Signal c;
+    for (const auto &row : s.history)
+      if (row.get("time") > 2.)
+        {
+          c.t.push_back(row.get("time"));
+          c.u.push_back(row.get("m0_u_z"));
+        }
+    return c;
+  }
+
+  /// The times of the zero crossings (linear between rows).
+  std::vector<double>
+  crossings(const Signal &c)
+  {
+    std::vector<double> z;
+    for (unsigned int i = 1; i < c.t.size(); ++i)
+      if ((c.u[i - 1] < 0.) != (c.u[i] < 0.))
+        z.push_back(c.t[i - 1]
+                    + (c.t[i] - c.t[i - 1]) * c.u[i - 1]
+                        / (c.u[i - 1] - c.u[i]));
+    return z;
+  }
+
+  bool
+  print(const bool ok, const std::string &what)
+  {
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::printf("%s: %s\n", what.c_str(), ok ? "yes" : "NO");
+    return ok;
+  }
+
+  bool
+  undamped()
+  {
+    const auto s = pneuma_test::run(vibrating_square(0., 9.5));
+    if (!print(s.exit_code == 0, "undamped: the run finishes"))
+      return false;
+    const auto z  = crossings(centre(s));
+    bool       ok = print(z.size() >= 30, "undamped: at least 15 periods");
+    // Least squares: crossing k at z_0 + k T/2.
+    const double n = z.size(), k_mean = 0.5 * (n - 1.);
+    double       z_mean = 0., skz = 0., skk = 0.;
+    for (const double zk : z)
+      z_mean += zk / n;
+    for (unsigned int k = 0; k < z.size(); ++k)
+      {
+        skz += (k - k_mean) * (z[k] - z_mean);
+        skk += (k - k_mean) * (k - k_mean);
+      }
+    ok = pneuma_test::check("undamped: period of the (1,1) mode [s]",
+                            2. * skz / skk,
+                            1. / frequency,
+                            5e-3)
+         && ok;
+    // |T + W| at every row against the largest kinetic energy.
+    double worst = 0., largest = 0.;
+    for (const auto &row : s.history)
+      {
+        worst   = std::max(worst,
+                         std::abs(row.get("kinetic_energy")
+                                  + row.get("residual_work")));
+        largest = std::max(largest, row.get("kinetic_energy"));
+      }
+    ok = print(worst < 1e-3 * largest,
+               "undamped: energy balance within 1e-3 at every row")
+         && ok;
+    return ok;
+  }
+
+  bool
+  damped()
+  {
+    const double zeta = 0.05;
+    const auto   s    = pneuma_test::run(vibrating_square(zeta, 4.5));
+    if (!print(s.exit_code == 0, "damped: the run finishes"))
+      return false;
+    // Successive maxima of the monitor's displacement.
+    const Signal        c = centre(s);
+    std::vector<double> peak_t, peak_u;
+    for (unsigned int i = 1; i + 1 < c.u.size(); ++i)
+      if (c.u[i] > c.u[i - 1] && c.u[i] >= c.u[i + 1] && c.u[i] > 0.)
+        {
+          peak_t.push_back(c.t[i]);
+          peak_u.push_back(c.u[i]);
+        }
+    if (!print(peak_u.size() >= 3, "damped: at least 3 peaks"))
+      return false;
+    const unsigned int n     = peak_u.size() - 1;
+    const double       alpha = 4. * M_PI * zeta * frequency;
+    const double       decay = std::pow(peak_u[n] / peak_u[0], 1. / n);
+    const double       T_d   = (peak_t[n] - peak_t[0]) / n;
+    return pneuma_test::check("damped: amplitude ratio per period",
+                              decay,
+                              std::exp(-0.5 * alpha * T_d),
+                              2e-2);
+  }
+
+  bool
+  too_large_step()
+  {
+    pneuma_test::Settings s = pneuma_test::quiet();
+    for (const auto &e : vibrating_square(0., 2.5))
+      s.push_back(e);
+    s.push_back({"Explicit dynamics/Time step", "0.01"});
+    // The simulator outlives the exception (its timers print nothing).
+    const auto  simulator = pneuma_test::make(s);
+    std::string what;
+    try
+      {
+        simulator->run();
+      }
+    catch (const pneuma::InputError &e)
+      {
+        what = e.what();
+      }
+    return print(what.find("Explicit dynamics/Time step: the time step 0.01 s "
+                           "is above the stable step")
+                   != std::string::npos,
+                 "a time step above the stable one is refused");
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  bool                                     ok = undamped();
+  ok                                          = damped() && ok;
+  ok                                          = too_large_step() && ok;
+  print(ok, "all checks passed");
+  return ok ? 0 : 1;
+}
