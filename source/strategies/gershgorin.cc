@@ -1,5 +1,7 @@
 #include <deal.II/lac/full_matrix.h>
 
+#include <Epetra_CrsMatrix.h>
+
 #include <pneuma/core/model.h>
 #include <pneuma/strategies/gershgorin.h>
 
@@ -15,18 +17,23 @@ namespace pneuma
     namespace
     {
       /// Row sums of |K| over the owned rows of the tangent's field block
-      /// (@p sums: one per owned row, in order).
+      /// (@p sums: one per owned row, in order), read in place from the
+      /// Epetra rows (deal.II's row iterator copies every row it visits).
       void
       add_row_sums(const LA::SparseMatrix &K,
                    const IndexSet         &owned,
                    std::vector<double>    &sums)
       {
-        unsigned int k = 0;
-        for (const auto row : owned)
+        const Epetra_CrsMatrix &M = K.trilinos_matrix();
+        for (int r = 0; r < M.NumMyRows(); ++r)
           {
-            for (auto e = K.begin(row); e != K.end(row); ++e)
-              sums[k] += std::abs(e->value());
-            ++k;
+            int     n       = 0;
+            double *entries = nullptr;
+            int    *columns = nullptr;
+            M.ExtractMyRowView(r, n, entries, columns);
+            double &sum = sums[owned.index_within_set(M.GRID64(r))];
+            for (int k = 0; k < n; ++k)
+              sum += std::abs(entries[k]);
           }
       }
 
