@@ -21,5 +21,9 @@ namespace pneuma
     setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
     setenv("OMPI_MCA_pml", "ob1", 0);
     setenv("OMPI_MCA_btl", "self", 0);
+    // Isolated singletons share one session directory (job 0/1): the MPI-IO
+    // shared file pointer's "sm" component, which puts a file there, failed
+    // when two runs started and ended side by side (a checkpoint's mesh).
+    setenv("OMPI_MCA_sharedfp", "^sm", 0);
   }
 } // namespace pneuma
