@@ -19,17 +19,14 @@ namespace pneuma
     using namespace dealii;
     using solvers::BorderedVector;
 
-    namespace
+
+    std::string
+    as_text(const double x)
     {
-      /// A number in a message, to 6 significant digits.
-      std::string
-      as_text(const double x)
-      {
-        std::ostringstream out;
-        out << x;
-        return out.str();
-      }
-    } // namespace
+      std::ostringstream out;
+      out << x;
+      return out.str();
+    }
 
     void
     ExplicitDynamics::declare_parameters(ParameterHandler &prm)
@@ -227,8 +224,15 @@ namespace pneuma
         return error;
       // A restart inside the stage goes on with the checkpoint's estimate
       // (the same steps as the run it continues).
+      if (model.n_border() > 0)
+        x.border = model.border_for(x.field, t);
       if (!resuming)
         motion.stable_step = estimate_step(model, x, t);
+      else
+        {
+          residual = x;
+          model.assemble_residual(x, t, residual);
+        }
       // The run's first stable step judges the input's Time step; later
       // ones the state's (integrate(): exit 2).
       check_input(settings.time_step <= motion.stable_step
@@ -286,18 +290,12 @@ namespace pneuma
     {
       if (!used)
         return;
-      const auto     g     = StatisticsGroup::run();
-      constexpr auto use   = Statistics::history;
-      const double   E     = motion.kinetic + motion.work + motion.damping;
-      const double   scale = motion.scale;
+      const auto     g   = StatisticsGroup::run();
+      constexpr auto use = Statistics::history;
       row.add(g, "kinetic_energy", "J", motion.kinetic, use);
       row.add(g, "residual_work", "J", motion.work, use);
       row.add(g, "damping_energy", "J", motion.damping, use);
-      row.add(g,
-              "energy_balance_error",
-              "",
-              scale > 0. ? std::abs(E - motion.start_energy) / scale : 0.,
-              use);
+      row.add(g, "energy_balance_error", "", motion.balance_error(), use);
       row.add(g, "stable_time_step", "s", motion.stable_step, use);
     }
 
@@ -312,15 +310,7 @@ namespace pneuma
       row.add_count(g, "explicit_step_estimates", total_estimates, counts);
       row.add(g, "explicit_smallest_step", "s", smallest_step, counts);
       row.add(g, "kinetic_energy", "J", motion.kinetic, counts);
-      const double scale = motion.scale;
-      row.add(g,
-              "energy_balance_error",
-              "",
-              scale > 0. ? std::abs(motion.kinetic + motion.work
-                                    + motion.damping - motion.start_energy)
-                             / scale
-                         : 0.,
-              counts);
+      row.add(g, "energy_balance_error", "", motion.balance_error(), counts);
     }
 
     void

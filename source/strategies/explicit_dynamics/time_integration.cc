@@ -26,17 +26,6 @@ namespace pneuma
     using namespace dealii;
     using solvers::BorderedVector;
 
-    namespace
-    {
-      /// A number in a message, to 6 significant digits.
-      std::string
-      as_text(const double x)
-      {
-        std::ostringstream out;
-        out << x;
-        return out.str();
-      }
-    } // namespace
 
     double
     stable_time_step(const Model &model, const LA::Vector &inverse_mass)
@@ -55,8 +44,8 @@ namespace pneuma
                                     const BorderedVector &x,
                                     const double          t)
     {
-      BorderedVector r = x;
-      model.assemble(x, t, r);
+      residual = x;
+      model.assemble(x, t, residual);
       ++motion.estimates;
       motion.estimated_at = motion.steps;
       ++total_estimates;
@@ -129,15 +118,10 @@ namespace pneuma
                                 double         &t,
                                 const double    t_end)
     {
-      Model            &model = run.model;
-      BorderedVector    r = x, r_next = x;
-      LA::Vector        dx = model.make_field(), &v = motion.velocity.field;
-      const std::string start = model.begin_step(t, x);
-      if (!start.empty())
-        return start;
-      if (model.n_border() > 0)
-        x.border = model.border_for(x.field, t);
-      model.assemble_residual(x, t, r);
+      Model &model = run.model;
+      // The residual at x, t is the last step's (or begin_stage()'s).
+      BorderedVector &r = residual, r_next = residual;
+      LA::Vector      dx = model.make_field(), &v = motion.velocity.field;
       while (!run.stages.finished(t, t_end))
         {
           if (motion.steps % settings.estimate_every == 0

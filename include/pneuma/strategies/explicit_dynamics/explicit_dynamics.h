@@ -40,6 +40,8 @@
 
 #include <deal.II/base/types.h>
 
+#include <cmath>
+
 #include <pneuma/core/linear_algebra.h>
 #include <pneuma/strategies/solution_strategy.h>
 
@@ -109,6 +111,15 @@ namespace pneuma
         /// The step of the last stable-step estimate (none: invalid).
         unsigned int estimated_at = dealii::numbers::invalid_unsigned_int;
 
+        /// |T + W + D - T_0| relative to the largest energy so far.
+        double
+        balance_error() const
+        {
+          return scale > 0.
+                   ? std::abs(kinetic + work + damping - start_energy) / scale
+                   : 0.;
+        }
+
         template <class Archive>
         void
         serialize(Archive &ar, const unsigned int)
@@ -126,7 +137,8 @@ namespace pneuma
                 solvers::BorderedVector &x,
                 double                  &t,
                 const double             t_end);
-      /// The stable step at @p x, t from the tangent there.
+      /// The stable step at @p x, t from the tangent there (the residual
+      /// there into residual).
       double
       estimate_step(Model                         &model,
                     const solvers::BorderedVector &x,
@@ -149,11 +161,13 @@ namespace pneuma
       void
       accept(Run &run, const solvers::BorderedVector &x, const double t);
 
-      Settings     settings;
-      double       alpha = 0.; ///< mass damping [1/s]
-      bool         used = false, resumed = false;
-      Motion       motion;
-      LA::Vector   inverse_mass;
+      Settings   settings;
+      double     alpha = 0.; ///< mass damping [1/s]
+      bool       used = false, resumed = false;
+      Motion     motion;
+      LA::Vector inverse_mass;
+      /// r(u_n, t_n) of the state the motion is at.
+      solvers::BorderedVector residual;
       unsigned int steps_at_report = 0, total_steps = 0, total_estimates = 0;
       double       smallest_step = 0.;
       /// The running stage: its end, and the wall time and steps at its
@@ -161,6 +175,10 @@ namespace pneuma
       double       stage_end = 0., stage_start_wall = 0.;
       unsigned int stage_start_steps = 0;
     };
+
+    /// A number in a message, to 6 significant digits.
+    std::string
+    as_text(const double x);
 
     /**
      * Gershgorin's bound 2 / sqrt(max_i sum_j |K_ij| / M_i) on the stable
