@@ -3,6 +3,7 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/numerics/data_out.h>
 
 #include <pneuma/cables/cable_element.h>
@@ -15,6 +16,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <iomanip>
 #include <limits>
 #include <sstream>
 
@@ -96,6 +98,24 @@ namespace pneuma
       {
         const Tensor<1, 3> d = cell->vertex(1) - cell->vertex(0);
         return d / d.norm();
+      }
+
+      /// Lengths are in metres, as for the membrane (scene_generator.cc): a
+      /// cable of no extent or of an astronomical one is a typing error
+      /// (e.g. a point at 1e300, whose element lengths overflow).
+      void
+      check_extent(const Triangulation<1, 3> &tria, const std::string &where)
+      {
+        const auto   box    = GridTools::compute_bounding_box(tria);
+        const double extent = box.get_boundary_points().first.distance(
+          box.get_boundary_points().second);
+        if (!(std::isfinite(extent) && extent >= 1e-6 && extent <= 1e6))
+          {
+            std::ostringstream m;
+            m << "the cable spans " << std::setprecision(3) << extent
+              << " m; lengths are in metres (1e-6 m to 1e6 m)";
+            throw InputError(where, m.str());
+          }
       }
     } // namespace
 
@@ -204,6 +224,7 @@ namespace pneuma
           const CableDefinition &d = parameters[k];
           auto                   b = std::make_unique<Body>(d);
           d.shape->create_mesh(d.n_elements, b->tria);
+          check_extent(b->tria, d.path + "/" + d.shape_name);
           // The distributed load must be finite along the cable at t = 0.
           {
             std::vector<Point<3>> nodes(b->tria.get_vertices());
