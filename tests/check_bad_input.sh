@@ -101,6 +101,7 @@ check "$dir/valid.prm"              1 "Boundary conditions/Fixed regions:" --set
 check "$dir/valid.prm"              1 "Load stepping/Strategy: explicit dynamics needs a mass on every free unknown; 123 have none" --set "Load stepping/Strategy=explicit"
 check_mpi "$dir/valid.prm"          1 "Load stepping/Strategy: explicit dynamics needs a mass on every free unknown; 123 have none" --set "Load stepping/Strategy=explicit"
 check "$dir/valid.prm"              1 "Explicit dynamics/Damping frequency: a Damping ratio needs the frequency" --set "Explicit dynamics/Damping ratio=0.1"
+check "$dir/valid.prm"              1 "Explicit dynamics/Mass scaling time step: The string <-1e-5>" --set "Explicit dynamics/Mass scaling time step=-1e-5"
 check "$dir/valid.prm"              1 "Explicit dynamics/Time step: the time step 1 s is above the stable step 6.0268e-06 s" --set "Load stepping/Strategy=explicit" --set "Materials/Region 0/Density=1000" --set "Explicit dynamics/Time step=1"
 check_mpi "$dir/valid.prm"          1 "Explicit dynamics/Maximum steps: stage 1 (to t = 1) needs about 184362 steps" --set "Load stepping/Strategy=explicit" --set "Materials/Region 0/Density=1000" --set "Explicit dynamics/Maximum steps=1000"
 # A probe off the membrane (on 2 ranks: every rank stops with it).

@@ -94,6 +94,33 @@ namespace
            && ok;
   }
 
+  /// The same balloon under volume control: the pressure is the
+  /// multiplier of V(u) = V(t), which the relaxation holds by projection.
+  bool
+  volume_balloon()
+  {
+    Settings s = pneuma_test::neo_hookean_sphere_chamber();
+    s.insert(s.end(),
+             {{"Chambers/Chamber 1/Gas/Control", "volume"},
+              {"Chambers/Chamber 1/Gas/Volume/Function expression",
+               "(1 + t)^3"},
+              {"Load stepping/Stage end times", "0.5"},
+              {"Load stepping/Strategy", "relaxation"}});
+    const auto r  = pneuma_test::run(s);
+    bool       ok = print(r.exit_code == 0 && r.history.size() == 2,
+                    "volume balloon: one relaxation to t = 0.5");
+    if (!ok)
+      return false;
+    const double l = std::cbrt(r.history.back().get("c1_volume")
+                               / r.history.front().get("c1_volume"));
+    ok = pneuma_test::check("volume balloon: stretch", l, 1.5, 1e-10) && ok;
+    return pneuma_test::check("volume balloon: pR/(mu H)",
+                              r.history.back().get("c1_pressure") / 1e3,
+                              1.216278,
+                              1e-4)
+           && ok;
+  }
+
   Settings
   relaxed_first(Settings s)
   {
@@ -150,6 +177,7 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   bool                                     ok = hencky();
   ok                                          = gas_balloon() && ok;
+  ok                                          = volume_balloon() && ok;
   ok                                          = square_airbag() && ok;
   print(ok, "all checks passed");
   return ok ? 0 : 1;

@@ -135,6 +135,48 @@ namespace
            && ok;
   }
 
+  /// Mass scaling to twice the automatic step: every interior node's
+  /// row bound is the same (the axial stiffness governs), so each gets 4
+  /// times its mass in all three directions (the two next to the supports
+  /// 3 times: their rows miss a neighbour), and the transverse period
+  /// doubles.
+  bool
+  string_mass_scaling()
+  {
+    const auto with = [](const std::string &end) {
+      pneuma_test::Settings s = string(64, "if(t <= 1, sin(pi*x), 0)");
+      s.push_back({"Load stepping/Stage end times", "1, " + end});
+      s.push_back({"Load stepping/Strategy", "static, explicit"});
+      s.push_back({"Explicit dynamics/Output interval", "2e-4"});
+      return s;
+    };
+    const auto   plain = pneuma_test::run(with("1.12"));
+    const double step  = 0.9 * plain.history.back().get("stable_time_step");
+    pneuma_test::Settings s = with("1.24");
+    s.push_back({"Explicit dynamics/Mass scaling time step",
+                 pneuma_test::number(2. * step)});
+    const auto scaled = pneuma_test::run(s);
+    if (!print(plain.exit_code == 0 && scaled.exit_code == 0,
+               "mass scaling: the runs finish"))
+      return false;
+    bool ok =
+      pneuma_test::check("mass scaling: added mass fraction",
+                         scaled.history.back().get("added_mass_fraction"),
+                         (61. * 3. + 2. * 2.) / 63.,
+                         1e-3);
+    ok = pneuma_test::check("mass scaling: the step reached [s]",
+                            0.9 * scaled.history.back().get("stable_time_step"),
+                            2. * step,
+                            1e-6)
+         && ok;
+    return pneuma_test::check(
+             "mass scaling: period over the unscaled one",
+             period(crossings(scaled, "cable1_mid_u_z", 0., 1.)),
+             2. * period(crossings(plain, "cable1_mid_u_z", 0., 1.)),
+             5e-3)
+           && ok;
+  }
+
   bool
   string_pulse()
   {
@@ -232,6 +274,7 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   bool                                     ok = string_period();
+  ok                                          = string_mass_scaling() && ok;
   ok                                          = string_pulse() && ok;
   ok                                          = breathing_sphere() && ok;
   print(ok, "all checks passed");

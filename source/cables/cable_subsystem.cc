@@ -97,6 +97,12 @@ namespace pneuma
     }
 
     void
+    CableSubsystem::largest_per_node(LA::Vector &v) const
+    {
+      cables.largest_per_node(v);
+    }
+
+    void
     CableSubsystem::add_mode_fields(const std::vector<std::string> &names,
                                     const std::vector<LA::Vector>  &modes)
     {

@@ -15,6 +15,7 @@
 #include <pneuma/loads/loads.h>
 
 #include <algorithm>
+#include <array>
 #include <fstream>
 #include <iomanip>
 #include <limits>
@@ -890,6 +891,27 @@ namespace pneuma
               }
           }
       m.compress(VectorOperation::add);
+    }
+
+    void
+    CableSystem::largest_per_node(LA::Vector &v) const
+    {
+      if (is_owner)
+        for (const auto &b : bodies)
+          for (const auto &cell : b->dof_handler.active_cell_iterators())
+            for (unsigned int vertex = 0; vertex < 2; ++vertex)
+              {
+                std::array<types::global_dof_index, 3> n;
+                double                                 largest = 0.;
+                for (unsigned int c = 0; c < 3; ++c)
+                  {
+                    n[c]    = b->offset + cell->vertex_dof_index(vertex, c);
+                    largest = std::max(largest, double(v[n[c]]));
+                  }
+                for (const auto i : n)
+                  v[i] = largest;
+              }
+      v.compress(VectorOperation::insert);
     }
 
     void

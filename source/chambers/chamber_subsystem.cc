@@ -245,9 +245,13 @@ namespace pneuma
     }
 
     Vector<double>
-    ChamberSubsystem::border_for(const LA::Vector &field, const double t) const
+    ChamberSubsystem::border_for(
+      const LA::Vector              &field,
+      const double                   t,
+      const Vector<double>          &border,
+      std::vector<BorderConstraint> &constraints) const
     {
-      return system.border_for(field, t);
+      return system.border_for(field, t, border, constraints);
     }
 
     void

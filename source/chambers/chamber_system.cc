@@ -314,11 +314,16 @@ namespace pneuma
     }
 
     Vector<double>
-    ChamberSystem::border_for(const LA::Vector &u, const double t) const
+    ChamberSystem::border_for(const LA::Vector              &u,
+                              const double                   t,
+                              const Vector<double>          &border,
+                              std::vector<BorderConstraint> &constraints) const
     {
-      // A copy at pseudo time t: its levels, then its gas pressures.
+      // A copy at pseudo time t with the given border: its levels, then
+      // its gas pressures.
       ChamberSystem at(*this);
       at.time = t;
+      at.unpack(border);
       for (auto &g : at.groups)
         if (g.liquid)
           {
@@ -340,6 +345,17 @@ namespace pneuma
               double V, V_l, A, w;
               group_measures(g, m, V, V_l, A, w);
               g.p = at.gas_law(g, V - V_l).first - parameters.ambient_pressure;
+            }
+          else
+            {
+              double V, V_l, A, w;
+              group_measures(g, m, V, V_l, A, w);
+              BorderConstraint c;
+              c.row   = g.p_index;
+              c.scale = curve(*def.volume, t) * g.V0;
+              c.value = V - c.scale;
+              c.unit  = unknown_scale[g.p_index];
+              constraints.push_back(c);
             }
         }
       return at.pack();

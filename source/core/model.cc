@@ -608,8 +608,27 @@ namespace pneuma
   Vector<double>
   Model::border_for(const LA::Vector &field, const double t)
   {
+    // The multipliers keep the subsystems' last values.
+    Vector<double> current(n_border());
+    for (unsigned int k = 0; k < subsystems.size(); ++k)
+      {
+        const Vector<double> b = subsystems[k]->border();
+        for (unsigned int j = 0; j < b.size(); ++j)
+          current[border_offsets[k] + j] = b[j];
+      }
+    std::vector<BorderConstraint> constraints;
+    return border_for(field, t, current, constraints);
+  }
+
+  Vector<double>
+  Model::border_for(const LA::Vector              &field,
+                    const double                   t,
+                    const Vector<double>          &current,
+                    std::vector<BorderConstraint> &constraints)
+  {
     ghost(field);
     Vector<double> border(n_border());
+    constraints.clear();
     for (unsigned int k = 0; k < subsystems.size(); ++k)
       {
         const unsigned int n = subsystems[k]->n_border_unknowns();
@@ -621,9 +640,20 @@ namespace pneuma
                     ExcMessage("the " + subsystems[k]->name()
                                + " cannot evaluate their border unknowns "
                                  "for a given field"));
-        const Vector<double> part = b->border_for(ghosted, t);
+        const unsigned int offset = border_offsets[k];
+        Vector<double>     own(n);
         for (unsigned int j = 0; j < n; ++j)
-          border[border_offsets[k] + j] = part[j];
+          own[j] = current[offset + j];
+        std::vector<BorderConstraint> own_constraints;
+        const Vector<double>          part =
+          b->border_for(ghosted, t, own, own_constraints);
+        for (unsigned int j = 0; j < n; ++j)
+          border[offset + j] = part[j];
+        for (auto c : own_constraints)
+          {
+            c.row += offset;
+            constraints.push_back(c);
+          }
       }
     return border;
   }
@@ -631,10 +661,36 @@ namespace pneuma
   LA::Vector
   Model::lumped_mass() const
   {
-    LA::Vector m = make_field(), condensed;
+    LA::Vector m = make_field();
     for (const auto *i : with<Inertia>())
       i->add_lumped_mass(m);
-    condense_kinematic(m, condensed);
+    // Each dependent dof's mass goes to its masters in proportion to the
+    // squared weights (Hinton, Rock & Zienkiewicz's diagonal scaling, per
+    // dof): C^T m would move it by the weights themselves, which are
+    // negative for a rigid plate's nodes outside its master triangle and
+    // leave a master without mass. A hanging node's (1/2, 1/2) and a tie's
+    // 1 are the same either way.
+    std::vector<types::global_dof_index> indices, dependent;
+    std::vector<double>                  values;
+    for (const auto &line : kinematic.get_lines())
+      if (owned.is_element(line.index))
+        {
+          double sum = 0.;
+          for (const auto &entry : line.entries)
+            sum += entry.second * entry.second;
+          for (const auto &[master, weight] : line.entries)
+            {
+              indices.push_back(master);
+              values.push_back(m[line.index] * weight * weight / sum);
+            }
+          dependent.push_back(line.index);
+        }
+    LA::Vector condensed(m);
+    condensed.add(indices, values);
+    condensed.compress(VectorOperation::add);
+    for (const auto i : dependent)
+      condensed[i] = 0.;
+    condensed.compress(VectorOperation::insert);
     return condensed;
   }
 
@@ -775,6 +831,8 @@ namespace pneuma
     a.external        = f_ext;
     a.border_residual = &residual.border;
     a.coupling        = &border;
+    if (&border == &coupling || &border == &scratch_coupling)
+      last_coupling = &border; // (not a caller's own blocks)
     // A subsystem's symmetry can change with its state (friction slip).
     bool symmetric = true;
     a.symmetric    = K ? &symmetric : nullptr;

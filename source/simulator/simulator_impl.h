@@ -148,7 +148,8 @@ namespace pneuma
                                 const std::string &file) const
   {
     // 1: a write failed (the disk); 2: the state is not finite (every
-    // rank knows it alike; not the disk's fault).
+    // rank knows it alike; not the disk's fault); 3: another error, whose
+    // message is kept (not blamed on the disk).
     unsigned int failed = 0;
     std::string  what;
     try
@@ -160,11 +161,20 @@ namespace pneuma
         failed = 2;
         what   = e.what();
       }
-    catch (const std::exception &)
+    catch (const WriteError &)
       {
         failed = 1;
       }
+    catch (const std::exception &e)
+      {
+        failed = 3;
+        what   = e.what();
+      }
     failed = dealii::Utilities::MPI::max(failed, comm);
+    if (failed == 3)
+      for (const auto &m : dealii::Utilities::MPI::all_gather(comm, what))
+        if (!m.empty())
+          throw OutputError("cannot write '" + file + "': " + m);
     if (failed == 2)
       {
         // The message of the first rank that has one (a cable's writer

@@ -37,39 +37,46 @@ namespace pneuma
           }
       }
 
-      /// The border's bound (see stiffness_row_sums()). Unknowns without a
-      /// field column or row (a prescribed pressure) add nothing.
+      /// The border's bound (see stiffness_row_sums()) over the unknowns
+      /// that follow the field (a nonzero diagonal in D). Unknowns without
+      /// a field column or row (a prescribed pressure) add nothing; the
+      /// multipliers of constraints (a prescribed volume, D_jj = 0) remove
+      /// a motion rather than stiffen one, which lowers no bound.
       void
       add_border_sums(const solvers::BorderCoupling &coupling,
                       const IndexSet                &owned,
                       std::vector<double>           &sums)
       {
-        const unsigned int n = coupling.size();
+        std::vector<unsigned int> follow;
+        for (unsigned int k = 0; k < coupling.size(); ++k)
+          if (coupling.D(k, k) != 0.)
+            follow.push_back(k);
+        const unsigned int n = follow.size();
         if (n == 0)
           return;
         FullMatrix<double> D_inverse(n, n);
-        D_inverse.copy_from(coupling.D);
-        try
-          {
-            D_inverse.gauss_jordan();
-          }
-        catch (...)
-          {
-            return; // a singular border block couples only through K
-          }
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            D_inverse(i, j) = coupling.D(follow[i], follow[j]);
+        D_inverse.gauss_jordan();
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            if (!std::isfinite(D_inverse(i, j)))
+              return; // a singular border block couples only through K
         std::vector<double> c_norm(n, 0.);
         for (unsigned int l = 0; l < n; ++l)
-          if (coupling.has_C[l])
-            c_norm[l] = coupling.C[l].l1_norm();
+          if (coupling.has_C[follow[l]])
+            c_norm[l] = coupling.C[follow[l]].l1_norm();
         for (unsigned int k = 0; k < n; ++k)
-          if (coupling.has_B[k])
+          if (coupling.has_B[follow[k]])
             {
               double weight = 0.;
               for (unsigned int l = 0; l < n; ++l)
                 weight += std::abs(D_inverse(k, l)) * c_norm[l];
-              unsigned int j = 0;
+              const LA::Vector &B = coupling.B[follow[k]];
+              unsigned int      j = 0;
               for (const auto row : owned)
-                sums[j++] += std::abs(coupling.B[k][row]) * weight;
+                sums[j++] += std::abs(B[row]) * weight;
             }
       }
     } // namespace

@@ -71,6 +71,8 @@ namespace pneuma
       void
       add_lumped_mass(LA::Vector &m) const override;
       void
+      largest_per_node(LA::Vector &v) const override;
+      void
       add_mode_fields(const std::vector<std::string> &names,
                       const std::vector<LA::Vector>  &modes) override;
       void

@@ -190,6 +190,10 @@ namespace pneuma
       /// assemble_mass()) into @p m (added; all ranks call).
       void
       lumped_mass(LA::Vector &m) const;
+      /// The owned entries of @p v on each node's three translations set
+      /// to their largest (the section unknowns keep theirs).
+      void
+      largest_per_node(LA::Vector &v) const;
 
       /// Mode shapes (global vectors) to add as nodal fields to the next
       /// write_output(), by name.

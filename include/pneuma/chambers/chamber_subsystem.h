@@ -98,7 +98,10 @@ namespace pneuma
       start_prestress(const LA::Vector &external) const override;
       /// The border for a given field (ChamberSystem::border_for()).
       Vector<double>
-      border_for(const LA::Vector &field, const double t) const override;
+      border_for(const LA::Vector              &field,
+                 const double                   t,
+                 const Vector<double>          &border,
+                 std::vector<BorderConstraint> &constraints) const override;
       void
       add_statistics(Statistics       &statistics,
                      const LA::Vector &field,

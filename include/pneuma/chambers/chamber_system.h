@@ -30,6 +30,7 @@
 
 #include <pneuma/chambers/chamber_assembler.h>
 #include <pneuma/chambers/chamber_parameters.h>
+#include <pneuma/core/capabilities.h>
 #include <pneuma/solvers/border.h>
 
 #include <string>
@@ -121,12 +122,17 @@ namespace pneuma
        * The scaled border that the chambers' equations give for the field
        * @p u (ghosted) at pseudo time @p t, without Newton: the levels that
        * hold the liquid volumes, the pressures of the gas laws at the gas
-       * volumes they leave, the prescribed pressures. An open chamber under
-       * volume control keeps its last pressure: it is the multiplier of its
-       * volume constraint, not a function of the field.
+       * volumes they leave, the prescribed pressures. A gas under volume
+       * control (not sealed) keeps its pressure from @p border: it is the
+       * multiplier of its volume constraint V(u) = V(t), not a function of
+       * the field; the constraint's row and V(u) - V(t) [m^3] go to
+       * @p constraints.
        */
       Vector<double>
-      border_for(const LA::Vector &u, const double t) const;
+      border_for(const LA::Vector              &u,
+                 const double                   t,
+                 const Vector<double>          &border,
+                 std::vector<BorderConstraint> &constraints) const;
 
       /// Force scale of the chamber loads (for the residual reference).
       double

@@ -317,17 +317,39 @@ namespace pneuma
   };
 
   /**
+   * A border row that is a constraint on the field, g(u, t) = 0, held by
+   * its unknown as a Lagrange multiplier (a chamber's prescribed volume,
+   * held by its pressure): no value of the unknown satisfies it for a
+   * given field, so a strategy without a matrix moves the field instead
+   * (strategies/border_projection.h). @p row: the row among the
+   * subsystem's (the model's, from Model::border_for()); @p value: g in
+   * its physical unit; @p scale: the size that makes it relative (the
+   * prescribed volume); @p unit: the unknown's scale in the border vector
+   * (the physical multiplier is the border entry times @p unit).
+   */
+  struct BorderConstraint
+  {
+    unsigned int row   = 0;
+    double       value = 0., scale = 1., unit = 1.;
+  };
+
+  /**
    * Border unknowns evaluated for a given field, without Newton (what an
    * explicit strategy needs): the values that satisfy this subsystem's
    * border equations at @p field (ghosted) and pseudo time @p t (a gas
    * pressure from its law at the current volume, a liquid level that holds
-   * the liquid's volume).
+   * the liquid's volume). The unknowns of constraint rows keep their value
+   * in @p border (scaled, this subsystem's part); those rows and their
+   * values at @p field go to @p constraints.
    */
   class BorderFromField
   {
   public:
     virtual ~BorderFromField() = default;
     virtual dealii::Vector<double>
-    border_for(const LA::Vector &field, const double t) const = 0;
+    border_for(const LA::Vector              &field,
+               const double                   t,
+               const dealii::Vector<double>  &border,
+               std::vector<BorderConstraint> &constraints) const = 0;
   };
 } // namespace pneuma

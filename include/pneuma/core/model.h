@@ -199,6 +199,13 @@ namespace pneuma
     {
       return coupling;
     }
+    /// The border blocks of the last assembly, of a residual or of a
+    /// tangent (the chamber couplings come with every residual).
+    const solvers::BorderCoupling &
+    last_border_coupling() const
+    {
+      return *last_coupling;
+    }
     unsigned int
     n_linear_solves() const
     {
@@ -494,10 +501,22 @@ namespace pneuma
     dealii::Vector<double>
     border_for(const LA::Vector &field, const double t);
     /**
+     * The same, with @p border the current border (scaled): the unknowns
+     * of constraint rows (BorderConstraint) keep their values from it, and
+     * those rows (model rows) with their values at @p field go to
+     * @p constraints.
+     */
+    dealii::Vector<double>
+    border_for(const LA::Vector              &field,
+               const double                   t,
+               const dealii::Vector<double>  &border,
+               std::vector<BorderConstraint> &constraints);
+    /**
      * The lumped (diagonal) mass of every subsystem with Inertia
-     * (core/capabilities.h), the dependent dofs' masses moved to their
-     * masters (C^T m): for strategies without a matrix (explicit
-     * dynamics, dynamic relaxation). Owned entries.
+     * (core/capabilities.h), each dependent dof's mass moved to its
+     * masters in proportion to the squared weights (positive, the total
+     * kept): for strategies without a matrix (explicit dynamics, dynamic
+     * relaxation). Owned entries.
      */
     LA::Vector
     lumped_mass() const;
@@ -560,6 +579,8 @@ namespace pneuma
     solvers::BorderCoupling coupling;
     /// Border blocks of assemble_residual(), thrown away.
     solvers::BorderCoupling scratch_coupling;
+    /// The coupling assemble_into() filled last.
+    const solvers::BorderCoupling *last_coupling = &coupling;
     /// Pseudo time of the loads in assemble().
     double current_time = 0.;
     /// A step has been committed (or a checkpoint loaded): steps no longer

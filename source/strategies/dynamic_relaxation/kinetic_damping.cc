@@ -7,6 +7,7 @@
 
 #include <pneuma/core/interrupt.h>
 #include <pneuma/core/model.h>
+#include <pneuma/strategies/border_projection.h>
 #include <pneuma/strategies/dynamic_relaxation/dynamic_relaxation.h>
 #include <pneuma/strategies/run.h>
 
@@ -76,22 +77,56 @@ namespace pneuma
       /// the motion, with the named steps of the iteration.
       struct Relaxation
       {
-        Model          &model;
-        BorderedVector &x;
-        const double    t;
-        double          safety;
-        BorderedVector  r;
-        Motion          motion;
-        LA::Vector      dx;
+        Model           &model;
+        BorderedVector  &x;
+        const double     t;
+        double           safety;
+        BorderedVector   r;
+        Motion           motion;
+        LA::Vector       dx;
+        BorderProjection projection;
 
-        /// x moves by dx; the border unknowns follow the field.
+        /// x moves by dx; the border unknowns follow the field, and the
+        /// multipliers of constraints (a prescribed volume) move it along
+        /// M^-1 B to hold them (strategies/border_projection.h; the step
+        /// has a unit time: the velocity takes the change).
         void
         move()
         {
           model.distribute_increment(dx);
           x.field += dx;
-          if (model.n_border() > 0)
-            x.border = model.border_for(x.field, t);
+          if (model.n_border() == 0)
+            return;
+          if (motion.inverse_mass.size() == 0)
+            {
+              x.border = model.border_for(x.field, t);
+              return;
+            }
+          const std::string error =
+            project_border(model, x, t, motion.inverse_mass, 1., projection);
+          AssertThrow(error.empty(), ExcMessage(error));
+          if (!projection.rows.empty())
+            motion.velocity += projection.free_change;
+        }
+        /**
+         * Move x onto the border constraints (a prescribed volume that
+         * the stage's time has changed) keeping their multipliers: the
+         * projection's multiplier is the impulse of one fictitious step,
+         * not a pressure; the motion then finds the pressure. Returns
+         * whether x moved (then restart()).
+         */
+        bool
+        hold_constraints()
+        {
+          if (model.n_border() == 0)
+            return false;
+          const Vector<double> kept = x.border;
+          const std::string    error =
+            project_border(model, x, t, motion.inverse_mass, 1., projection);
+          AssertThrow(error.empty(), ExcMessage(error));
+          for (const auto row : projection.rows)
+            x.border[row] = kept[row];
+          return !projection.rows.empty();
         }
         /// From rest at x, with the mass of the stiffest tangent there;
         /// returns |r|.
@@ -165,8 +200,10 @@ namespace pneuma
       Result     result;
       relaxation.dx = run.model.make_field();
       relaxation.move();
-      relaxation.r     = x;
-      double r_norm    = relaxation.restart();
+      relaxation.r  = x;
+      double r_norm = relaxation.restart();
+      if (relaxation.hold_constraints())
+        r_norm = relaxation.restart();
       result.reference = std::max(r_norm, run.model.load_norm());
       if (result.reference == 0.)
         {

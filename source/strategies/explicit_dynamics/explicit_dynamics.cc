@@ -44,6 +44,15 @@ namespace pneuma
                         "The automatic step is this fraction of the stable "
                         "step estimate 2/omega_max (Gershgorin's bound).",
                         Patterns::Double(0., 1.));
+      prm.add_parameter("Mass scaling time step",
+                        settings.mass_scaling_step,
+                        "Mass scaling (LS-DYNA's DT2MS): the step [s] to "
+                        "reach by adding mass to the unknowns whose stable "
+                        "step (Gershgorin's row bound) is shorter, at every "
+                        "estimate; the added mass fraction is reported "
+                        "(history and summary). It slows the stiff parts' "
+                        "motion: compare with a run without it. 0: off.",
+                        Patterns::Double(0.));
       prm.add_parameter("Estimate interval",
                         settings.estimate_every,
                         "Steps between two estimates of the stable step "
@@ -133,21 +142,25 @@ namespace pneuma
           result.state = model.initial_state();
           run.report(StepReport{}, result.state);
         }
-      // The inverse lumped mass, zero on constrained dofs (they follow
-      // their prescribed values); at rest unless a restart restored the
-      // motion.
-      inverse_mass = model.lumped_mass();
+      // The lumped mass, zero on constrained dofs (they follow their
+      // prescribed values), and its inverse (a restart restores the
+      // scaled one); at rest unless a restart restored the motion.
+      mass = model.lumped_mass();
       for (const auto row : model.locally_owned())
-        inverse_mass[row] =
-          model.constraints().is_constrained(row) ? 0. : 1. / inverse_mass[row];
-      inverse_mass.compress(VectorOperation::insert);
+        if (model.constraints().is_constrained(row))
+          mass[row] = 0.;
+      mass.compress(VectorOperation::insert);
+      if (!resumed)
+        set_inverse_mass(mass);
       if (!resumed)
         {
           motion                = Motion();
           motion.velocity       = result.state;
           motion.velocity.field = 0.;
           motion.velocity.border.reinit(0);
+          motion.increment = motion.velocity;
         }
+      previous_increment   = motion.increment.field;
       bool resuming        = resumed;
       resumed              = false;
       BorderedVector x     = result.state;
@@ -257,8 +270,11 @@ namespace pneuma
                     + std::to_string(settings.max_steps));
       run.out << "  stable time step " << motion.stable_step
               << " s (Gershgorin), step " << dt << " s, about "
-              << static_cast<long long>(std::ceil(needed)) << " steps"
-              << std::endl;
+              << static_cast<long long>(std::ceil(needed)) << " steps";
+      if (settings.mass_scaling_step > 0.)
+        run.out << "; mass scaling added " << 100. * motion.added_mass
+                << " % of the mass";
+      run.out << std::endl;
       stage_end         = t_end;
       stage_start_wall  = run.wall_clock.wall_time();
       stage_start_steps = motion.steps;
@@ -286,7 +302,7 @@ namespace pneuma
     ExplicitDynamics::add_history(Statistics &row,
                                   const StepReport &,
                                   const BorderedVector &,
-                                  Run &)
+                                  Run &run)
     {
       if (!used)
         return;
@@ -297,6 +313,13 @@ namespace pneuma
       row.add(g, "damping_energy", "J", motion.damping, use);
       row.add(g, "energy_balance_error", "", motion.balance_error(), use);
       row.add(g, "stable_time_step", "s", motion.stable_step, use);
+      if (settings.mass_scaling_step > 0.)
+        row.add(g, "added_mass_fraction", "", motion.added_mass, use);
+      // With chambers: the largest relative error of the border
+      // constraints (prescribed volumes) at the steps since the last row.
+      if (run.model.n_border() > 0)
+        row.add(g, "constraint_error", "", motion.constraint_error, use);
+      motion.constraint_error = 0.;
     }
 
     void
@@ -309,6 +332,8 @@ namespace pneuma
       row.add_count(g, "explicit_steps", total_steps, counts);
       row.add_count(g, "explicit_step_estimates", total_estimates, counts);
       row.add(g, "explicit_smallest_step", "s", smallest_step, counts);
+      if (settings.mass_scaling_step > 0.)
+        row.add(g, "largest_added_mass_fraction", "", largest_added, counts);
       row.add(g, "kinetic_energy", "J", motion.kinetic, counts);
       row.add(g, "energy_balance_error", "", motion.balance_error(), counts);
     }
@@ -320,6 +345,9 @@ namespace pneuma
     {
       checkpoint.put("explicit/motion", motion);
       vectors.push_back(&motion.velocity);
+      vectors.push_back(&motion.increment);
+      checkpoint_mass.field = inverse_mass;
+      vectors.push_back(&checkpoint_mass);
     }
 
     void
@@ -327,16 +355,19 @@ namespace pneuma
                                       std::vector<BorderedVector> &vectors)
     {
       motion = checkpoint.get<Motion>("explicit/motion");
-      AssertThrow(!vectors.empty(), ExcInternalError());
-      motion.velocity = std::move(vectors[0]);
-      steps_at_report = motion.steps;
-      resumed         = true;
+      AssertThrow(vectors.size() >= 3, ExcInternalError());
+      motion.velocity  = std::move(vectors[0]);
+      motion.increment = std::move(vectors[1]);
+      inverse_mass     = std::move(vectors[2].field);
+      steps_at_report  = motion.steps;
+      resumed          = true;
     }
 
     void
     ExplicitDynamics::save_summary(Checkpoint &checkpoint) const
     {
       checkpoint.put("explicit/steps", total_steps);
+      checkpoint.put("explicit/largest_added_mass", largest_added);
       checkpoint.put("explicit/estimates", total_estimates);
       checkpoint.put("explicit/smallest_step", smallest_step);
     }
@@ -345,6 +376,7 @@ namespace pneuma
     ExplicitDynamics::load_summary(const Checkpoint &checkpoint)
     {
       total_steps     = checkpoint.get<unsigned int>("explicit/steps");
+      largest_added   = checkpoint.get<double>("explicit/largest_added_mass");
       total_estimates = checkpoint.get<unsigned int>("explicit/estimates");
       smallest_step   = checkpoint.get<double>("explicit/smallest_step");
     }

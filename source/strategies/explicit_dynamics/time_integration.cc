@@ -5,9 +5,12 @@
  * stable step.
  */
 
+#include <pneuma/core/capabilities.h>
 #include <pneuma/core/input_error.h>
 #include <pneuma/core/interrupt.h>
 #include <pneuma/core/model.h>
+#include <pneuma/solvers/border.h>
+#include <pneuma/strategies/border_projection.h>
 #include <pneuma/strategies/explicit_dynamics/explicit_dynamics.h>
 #include <pneuma/strategies/gershgorin.h>
 #include <pneuma/strategies/run.h>
@@ -28,15 +31,61 @@ namespace pneuma
 
 
     double
-    stable_time_step(const Model &model, const LA::Vector &inverse_mass)
+    stable_time_step(const LA::Vector &g, const LA::Vector &inverse_mass)
     {
-      const LA::Vector g       = stiffness_row_sums(model);
-      double           largest = 0.;
-      for (const auto row : model.locally_owned())
+      double largest = 0.;
+      for (const auto row : g.locally_owned_elements())
         largest = std::max(largest, g[row] * inverse_mass[row]);
-      largest = Utilities::MPI::max(largest, model.mpi_communicator());
+      largest = Utilities::MPI::max(largest, g.get_mpi_communicator());
       return largest > 0. ? 2. / std::sqrt(largest)
                           : std::numeric_limits<double>::infinity();
+    }
+
+    double
+    stable_time_step(const Model &model, const LA::Vector &inverse_mass)
+    {
+      return stable_time_step(stiffness_row_sums(model), inverse_mass);
+    }
+
+    void
+    ExplicitDynamics::set_inverse_mass(const LA::Vector &m)
+    {
+      inverse_mass = m;
+      for (auto &mi : inverse_mass)
+        mi = mi > 0. ? 1. / mi : 0.;
+    }
+
+    void
+    ExplicitDynamics::scale_mass(const Model &model, const LA::Vector &g)
+    {
+      // Row i is stable for dt <= 2 sqrt(m_i/g_i): the step s dt_i reaches
+      // the target with m_i = g_i (target/(2 s))^2.
+      // A node's mass is the same in its three directions (the largest
+      // need of its components), so the scaled mass stays isotropic.
+      const double c =
+        std::pow(settings.mass_scaling_step / (2. * settings.safety), 2);
+      LA::Vector needed = g;
+      needed *= c;
+      for (const auto *i : model.with<Inertia>())
+        i->largest_per_node(needed);
+      LA::Vector m     = mass;
+      double     added = 0., total = 0.;
+      for (const auto row : m.locally_owned_elements())
+        if (mass[row] > 0.)
+          {
+            total += mass[row];
+            if (needed[row] > mass[row])
+              {
+                added += needed[row] - mass[row];
+                m[row] = needed[row];
+              }
+          }
+      m.compress(VectorOperation::insert);
+      const MPI_Comm comm = m.get_mpi_communicator();
+      motion.added_mass   = Utilities::MPI::sum(added, comm)
+                          / std::max(Utilities::MPI::sum(total, comm), 1e-300);
+      largest_added = std::max(largest_added, motion.added_mass);
+      set_inverse_mass(m);
     }
 
     double
@@ -49,7 +98,10 @@ namespace pneuma
       ++motion.estimates;
       motion.estimated_at = motion.steps;
       ++total_estimates;
-      return stable_time_step(model, inverse_mass);
+      const LA::Vector g = stiffness_row_sums(model);
+      if (settings.mass_scaling_step > 0.)
+        scale_mass(model, g);
+      return stable_time_step(g, inverse_mass);
     }
 
     namespace
@@ -112,6 +164,30 @@ namespace pneuma
               << " s to the stage's end" << std::setprecision(6) << std::endl;
     }
 
+    void
+    ExplicitDynamics::hold_constraints(const Model &model,
+                                       LA::Vector  &r,
+                                       const double dt)
+    {
+      // The projection's field change is part of the step: the velocity,
+      // the increment; the residual r_n had the multipliers' new values;
+      // the last step's work had r_n with their old ones (the trapezoid
+      // rule's second half).
+      const solvers::BorderCoupling &coupling = model.last_border_coupling();
+      double                         work     = 0.;
+      for (unsigned int k = 0; k < projection.rows.size(); ++k)
+        {
+          const LA::Vector &B = coupling.B[projection.rows[k]];
+          r.add(projection.increments[k], B);
+          work += projection.increments[k] * (previous_increment * B);
+        }
+      motion.work += 0.5 * work;
+      motion.velocity.field.add(1. / dt, projection.free_change);
+      motion.increment.field += projection.field_change;
+      motion.constraint_error =
+        std::max(motion.constraint_error, projection.error);
+    }
+
     std::string
     ExplicitDynamics::integrate(Run            &run,
                                 BorderedVector &x,
@@ -121,7 +197,7 @@ namespace pneuma
       Model &model = run.model;
       // The residual at x, t is the last step's (or begin_stage()'s).
       BorderedVector &r = residual, r_next = residual;
-      LA::Vector      dx = model.make_field(), &v = motion.velocity.field;
+      LA::Vector     &dx = motion.increment.field, &v = motion.velocity.field;
       while (!run.stages.finished(t, t_end))
         {
           if (motion.steps % settings.estimate_every == 0
@@ -150,8 +226,7 @@ namespace pneuma
           auto         ri     = r.field.begin();
           for (auto &vi : v)
             vi = ((1. - c) * vi - dt_mid * *mi++ * *ri++) / (1. + c);
-          const double vMv = mass_norm(v, inverse_mass);
-          motion.damping += alpha * dt_mid * vMv;
+          dx.swap(previous_increment);
           dx.equ(dt, v);
           model.distribute_increment(dx);
           x.field += dx;
@@ -160,7 +235,17 @@ namespace pneuma
           if (!message.empty())
             return message;
           if (model.n_border() > 0)
-            x.border = model.border_for(x.field, t);
+            {
+              // The border follows the field; multipliers of constraints
+              // (a prescribed chamber volume) move it to hold them.
+              message = project_border(
+                model, x, t, inverse_mass, dt * dt_mid / (1. + c), projection);
+              if (!message.empty())
+                return message;
+              if (!projection.rows.empty())
+                hold_constraints(model, r.field, dt);
+            }
+          motion.damping += alpha * dt_mid * mass_norm(v, inverse_mass);
           model.assemble_residual(x, t, r_next);
           motion.work += 0.5 * (dx * r.field + dx * r_next.field);
           std::swap(r, r_next);

@@ -43,6 +43,7 @@
 #include <cmath>
 
 #include <pneuma/core/linear_algebra.h>
+#include <pneuma/strategies/border_projection.h>
 #include <pneuma/strategies/solution_strategy.h>
 
 namespace pneuma
@@ -90,8 +91,10 @@ namespace pneuma
       struct Settings
       {
         /// 0: the stable step estimate times the safety factor.
-        double       time_step = 0., safety = 0.9;
-        unsigned int estimate_every = 100;
+        double time_step = 0., safety = 0.9;
+        /// Mass scaling's target step (0: off).
+        double       mass_scaling_step = 0.;
+        unsigned int estimate_every    = 100;
         double       damping_ratio = 0., damping_frequency = 0.;
         /// 0: a row at each stage's end only.
         double       output_interval = 0.;
@@ -103,10 +106,18 @@ namespace pneuma
       struct Motion
       {
         solvers::BorderedVector velocity;
+        /// The last step's increment u_{n+1} - u_n (field only).
+        solvers::BorderedVector increment;
         double previous_step = 0., stable_step = 0., kinetic = 0., work = 0.,
                damping = 0., start_energy = 0.;
         /// The largest of T, |W| and D so far (the balance error's scale).
-        double       scale = 0.;
+        double scale = 0.;
+        /// The largest relative error of the border constraints since the
+        /// last report.
+        double constraint_error = 0.;
+        /// The mass scaling's added mass over the physical mass (at the
+        /// last estimate).
+        double       added_mass = 0.;
         unsigned int steps = 0, estimates = 0;
         /// The step of the last stable-step estimate (none: invalid).
         unsigned int estimated_at = dealii::numbers::invalid_unsigned_int;
@@ -124,8 +135,8 @@ namespace pneuma
         void
         serialize(Archive &ar, const unsigned int)
         {
-          ar &previous_step &stable_step &kinetic &work &damping &start_energy
-            &scale &steps &estimates &estimated_at;
+          ar &previous_step &stable_step &kinetic &work &damping &start_energy &
+            scale &constraint_error &added_mass &steps &estimates &estimated_at;
         }
       };
 
@@ -143,6 +154,18 @@ namespace pneuma
       estimate_step(Model                         &model,
                     const solvers::BorderedVector &x,
                     const double                   t);
+      /// The projection's changes into the step of length @p dt: the
+      /// velocity, the increment, the residual @p r of u_n and the work.
+      void
+      hold_constraints(const Model &model, LA::Vector &r, const double dt);
+      /// inverse_mass from the diagonal mass @p m (zero where m is).
+      void
+      set_inverse_mass(const LA::Vector &m);
+      /// Mass scaling: every node whose Gershgorin row bounds @p g give a
+      /// stable step below the target gets the mass (the same in its three
+      /// directions) that reaches it.
+      void
+      scale_mass(const Model &model, const LA::Vector &g);
       /// The progress row at @p t with the step @p dt.
       void
       print_progress(Run &run, const double t, const double dt) const;
@@ -161,15 +184,23 @@ namespace pneuma
       void
       accept(Run &run, const solvers::BorderedVector &x, const double t);
 
-      Settings   settings;
-      double     alpha = 0.; ///< mass damping [1/s]
-      bool       used = false, resumed = false;
-      Motion     motion;
-      LA::Vector inverse_mass;
+      Settings settings;
+      double   alpha = 0.; ///< mass damping [1/s]
+      bool     used = false, resumed = false;
+      Motion   motion;
+      /// The physical lumped mass (zero on constrained dofs) and the
+      /// inverse of the one in use (scaled, if mass scaling is on).
+      LA::Vector mass, inverse_mass;
+      /// The inverse mass for a checkpoint (scratch).
+      mutable solvers::BorderedVector checkpoint_mass;
       /// r(u_n, t_n) of the state the motion is at.
       solvers::BorderedVector residual;
+      /// The increment of the step before the last (scratch).
+      LA::Vector previous_increment;
+      /// What the last projection of the border constraints changed.
+      BorderProjection projection;
       unsigned int steps_at_report = 0, total_steps = 0, total_estimates = 0;
-      double       smallest_step = 0.;
+      double       smallest_step = 0., largest_added = 0.;
       /// The running stage: its end, and the wall time and steps at its
       /// start (the progress rows' rate).
       double       stage_end = 0., stage_start_wall = 0.;
@@ -188,5 +219,8 @@ namespace pneuma
      */
     double
     stable_time_step(const Model &model, const LA::Vector &inverse_mass);
+    /// The same from the row sums @p g (stiffness_row_sums()).
+    double
+    stable_time_step(const LA::Vector &g, const LA::Vector &inverse_mass);
   } // namespace strategies
 } // namespace pneuma
