@@ -85,6 +85,8 @@ namespace pneuma
         Motion           motion;
         LA::Vector       dx;
         BorderProjection projection;
+        /// Why the border constraints could not be held ("" if they were).
+        std::string failure;
 
         /// x moves by dx; the border unknowns follow the field, and the
         /// multipliers of constraints (a prescribed volume) move it along
@@ -102,10 +104,9 @@ namespace pneuma
               x.border = model.border_for(x.field, t);
               return;
             }
-          const std::string error =
+          failure =
             project_border(model, x, t, motion.inverse_mass, 1., projection);
-          AssertThrow(error.empty(), ExcMessage(error));
-          if (!projection.rows.empty())
+          if (failure.empty() && !projection.rows.empty())
             motion.velocity += projection.free_change;
         }
         /**
@@ -121,9 +122,10 @@ namespace pneuma
           if (model.n_border() == 0)
             return false;
           const Vector<double> kept = x.border;
-          const std::string    error =
+          failure =
             project_border(model, x, t, motion.inverse_mass, 1., projection);
-          AssertThrow(error.empty(), ExcMessage(error));
+          if (!failure.empty())
+            return false;
           for (const auto row : projection.rows)
             x.border[row] = kept[row];
           return !projection.rows.empty();
@@ -204,6 +206,11 @@ namespace pneuma
       double r_norm = relaxation.restart();
       if (relaxation.hold_constraints())
         r_norm = relaxation.restart();
+      if (!relaxation.failure.empty())
+        {
+          result.failure = relaxation.failure;
+          return result;
+        }
       result.reference = std::max(r_norm, run.model.load_norm());
       if (result.reference == 0.)
         {
@@ -221,7 +228,9 @@ namespace pneuma
               && motion.kinetic
                    <= settings.kinetic_energy_tolerance * motion.peak)
             break;
-          result.failure = stop_reason(run.model, result, it);
+          result.failure = relaxation.failure.empty()
+                             ? stop_reason(run.model, result, it)
+                             : relaxation.failure;
           if (!result.failure.empty())
             return result;
           if (result.ratio > 1e3 * std::max(1., reset_ratio))
