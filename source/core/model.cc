@@ -440,6 +440,26 @@ namespace pneuma
     return states;
   }
 
+  namespace
+  {
+    /// The border of the subsystems' current values (scaled), each at its
+    /// offset.
+    Vector<double>
+    subsystem_border(const std::vector<std::unique_ptr<Subsystem>> &subsystems,
+                     const std::vector<unsigned int>               &offsets,
+                     const unsigned int                             n)
+    {
+      Vector<double> border(n);
+      for (unsigned int k = 0; k < subsystems.size(); ++k)
+        {
+          const Vector<double> b = subsystems[k]->border();
+          for (unsigned int j = 0; j < b.size(); ++j)
+            border[offsets[k] + j] = b[j];
+        }
+      return border;
+    }
+  } // namespace
+
   std::string
   Model::begin_step(const double t, solvers::BorderedVector &state)
   {
@@ -461,13 +481,7 @@ namespace pneuma
       }
     if (grown)
       rebuild_matrices();
-    state.border.reinit(n_border());
-    for (unsigned int k = 0; k < subsystems.size(); ++k)
-      {
-        const Vector<double> b = subsystems[k]->border();
-        for (unsigned int j = 0; j < b.size(); ++j)
-          state.border[border_offsets[k] + j] = b[j];
-      }
+    state.border = subsystem_border(subsystems, border_offsets, n_border());
     return "";
   }
 
@@ -609,15 +623,11 @@ namespace pneuma
   Model::border_for(const LA::Vector &field, const double t)
   {
     // The multipliers keep the subsystems' last values.
-    Vector<double> current(n_border());
-    for (unsigned int k = 0; k < subsystems.size(); ++k)
-      {
-        const Vector<double> b = subsystems[k]->border();
-        for (unsigned int j = 0; j < b.size(); ++j)
-          current[border_offsets[k] + j] = b[j];
-      }
     std::vector<BorderConstraint> constraints;
-    return border_for(field, t, current, constraints);
+    return border_for(field,
+                      t,
+                      subsystem_border(subsystems, border_offsets, n_border()),
+                      constraints);
   }
 
   Vector<double>

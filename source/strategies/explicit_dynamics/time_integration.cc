@@ -41,12 +41,6 @@ namespace pneuma
                           : std::numeric_limits<double>::infinity();
     }
 
-    double
-    stable_time_step(const Model &model, const LA::Vector &inverse_mass)
-    {
-      return stable_time_step(stiffness_row_sums(model), inverse_mass);
-    }
-
     void
     ExplicitDynamics::set_inverse_mass(const LA::Vector &m)
     {

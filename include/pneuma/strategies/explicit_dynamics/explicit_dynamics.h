@@ -212,14 +212,12 @@ namespace pneuma
     as_text(const double x);
 
     /**
-     * Gershgorin's bound 2 / sqrt(max_i sum_j |K_ij| / M_i) on the stable
-     * central-difference step, over the free dofs of @p model's last
-     * assembled tangent with the diagonal mass @p inverse_mass (inverted;
-     * zero on constrained dofs). Infinite where nothing is stiff.
+     * Gershgorin's bound 2 / sqrt(max_i g_i / M_i) on the stable
+     * central-difference step, from the row sums g_i = sum_j |K_ij| of the
+     * last assembled tangent (stiffness_row_sums()) and the diagonal mass
+     * @p inverse_mass (inverted; zero on constrained dofs). Infinite where
+     * nothing is stiff.
      */
-    double
-    stable_time_step(const Model &model, const LA::Vector &inverse_mass);
-    /// The same from the row sums @p g (stiffness_row_sums()).
     double
     stable_time_step(const LA::Vector &g, const LA::Vector &inverse_mass);
   } // namespace strategies
