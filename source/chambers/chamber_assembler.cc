@@ -1,10 +1,12 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <pneuma/chambers/chamber_assembler.h>
+
 #include <pneuma/chambers/free_surface_quadrature.h>
 #include <pneuma/core/input_error.h>
 #include <pneuma/membrane/reference_geometry.h>
@@ -248,9 +250,105 @@ namespace pneuma
         return {x, n};
       }
 
+      /**
+       * The points of a cut cell's wetted rule @p quadrature from the
+       * reference positions @p nodes of the cell's nodes, without an
+       * FEValues object (whose construction per cut cell and level was
+       * most of an explicit step with a liquid). The mapping is
+       * MappingQ(Cache) of the element's degree (1 or 2), whose support
+       * points are the element's nodes: X(xi) = sum_a X_a N_a(xi) is the
+       * mapping itself, J = dX/dxi, the normal J_1 x J_2 / |J_1 x J_2|,
+       * JxW = |J_1 x J_2| w and the surface gradient J (J^T J)^-1 grad_xi N
+       * as FEValues forms them. The frame is turned by @p orientation
+       * times the sign that makes the normals' sum point along @p normal.
+       */
+      class CutPoints
+      {
+      public:
+        CutPoints(const FiniteElement<2, 3> &base,
+                  const Quadrature<2>       &quadrature,
+                  const Point<3>            *nodes,
+                  const Tensor<1, 3>        &normal)
+          : n_nodes(base.n_dofs_per_cell())
+          , X(quadrature.size())
+          , n(quadrature.size())
+          , JxW(quadrature.size())
+          , N(quadrature.size() * n_nodes)
+          , grad(quadrature.size() * n_nodes)
+        {
+          Tensor<1, 3> sum;
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              const Point<2> &xi = quadrature.point(q);
+              Tensor<1, 3>    J[2];
+              for (unsigned int a = 0; a < n_nodes; ++a)
+                {
+                  const double       Na = base.shape_value(a, xi);
+                  const Tensor<1, 2> ga = base.shape_grad(a, xi);
+                  X[q] += Na * nodes[a];
+                  J[0] += ga[0] * nodes[a];
+                  J[1] += ga[1] * nodes[a];
+                  N[q * n_nodes + a] = Na;
+                }
+              const Tensor<1, 3> c   = cross_product_3d(J[0], J[1]);
+              const double       det = c.norm();
+              n[q]                   = c / det;
+              JxW[q]                 = det * quadrature.weight(q);
+              sum += n[q];
+              // (J^T J)^-1, then the surface gradients.
+              const double G00 = J[0] * J[0], G01 = J[0] * J[1],
+                           G11 = J[1] * J[1], d = G00 * G11 - G01 * G01;
+              for (unsigned int a = 0; a < n_nodes; ++a)
+                {
+                  const Tensor<1, 2> ga = base.shape_grad(a, xi);
+                  const double       c0 = (G11 * ga[0] - G01 * ga[1]) / d,
+                               c1       = (G00 * ga[1] - G01 * ga[0]) / d;
+                  grad[q * n_nodes + a] = c0 * J[0] + c1 * J[1];
+                }
+            }
+          sign = sum * normal >= 0. ? 1. : -1.;
+        }
+
+        unsigned int
+        size() const
+        {
+          return X.size();
+        }
+
+        /// The point function for integrate().
+        auto
+        points() const
+        {
+          return [this](const unsigned int q, WallPoint &P) {
+            const membrane::TangentFrame frame =
+              membrane::tangent_frame(sign * n[q]);
+            P.E[0] = frame.e[0];
+            P.E[1] = frame.e[1];
+            P.X    = X[q];
+            P.JxW  = JxW[q];
+            for (unsigned int a = 0; a < n_nodes; ++a)
+              {
+                P.N[a]     = N[q * n_nodes + a];
+                P.dN[a][0] = grad[q * n_nodes + a] * frame.e[0];
+                P.dN[a][1] = grad[q * n_nodes + a] * frame.e[1];
+              }
+          };
+        }
+
+      private:
+        unsigned int              n_nodes;
+        std::vector<Point<3>>     X;
+        std::vector<Tensor<1, 3>> n;
+        std::vector<double>       JxW, N;
+        std::vector<Tensor<1, 3>> grad;
+        double                    sign = 1.;
+      };
+
       /// The hydrostatic terms of one wall over its wetted part: the whole
       /// cell (its reference points) if wet, the generated rule if cut
-      /// (with the frame turned to the reference normal @p normal).
+      /// (with the frame turned to the reference normal @p normal; from
+      /// the reference positions of the cell's nodes @p nodes, or with
+      /// FEValues if nullptr).
       void
       integrate_wetted(const FreeSurfaceQuadrature::Location at,
                        const FreeSurfaceQuadrature          &free_surface,
@@ -259,6 +357,7 @@ namespace pneuma
                        const membrane::ReferenceGeometry            &reference,
                        const unsigned int                            cell_index,
                        const Tensor<1, 3>                           &normal,
+                       const Point<3>                               *nodes,
                        const NodeDofs                               &dof,
                        const std::vector<double>                    &local_u,
                        const double                                  s,
@@ -284,6 +383,14 @@ namespace pneuma
         if (at == FreeSurfaceQuadrature::Location::wet)
           wetted(reference.n_q_points(),
                  reference_points(reference, cell_index));
+        else if (at == FreeSurfaceQuadrature::Location::cut && nodes)
+          {
+            const CutPoints cut(cell->get_fe().base_element(0),
+                                free_surface.wet_quadrature(),
+                                nodes,
+                                normal);
+            wetted(cut.size(), cut.points());
+          }
         else if (at == FreeSurfaceQuadrature::Location::cut)
           {
             FEValues<2, 3> cut_values(mapping,
@@ -324,6 +431,8 @@ namespace pneuma
                             ? parameters.gravity / gravity_magnitude
                             : Tensor<1, 3>({0., 0., -1.});
       membership.clear();
+      measure_cache   = MeasureCache();
+      surface_heights = SurfaceHeights();
       for (unsigned int c = 0; c < parameters.chambers.size(); ++c)
         for (const auto &[id, sign] : parameters.chambers[c].regions)
           membership[id].emplace_back(c, sign);
@@ -457,13 +566,22 @@ namespace pneuma
     }
 
     ChamberAssembler::Pass::Scratch::Scratch(const ChamberAssembler &assembler)
+      : assembler(assembler)
+    {
+    }
+
+    ChamberAssembler::Pass::Scratch::Liquid &
+    ChamberAssembler::Pass::Scratch::liquid()
+    {
+      if (!liquid_data)
+        liquid_data = std::make_unique<Liquid>(assembler);
+      return *liquid_data;
+    }
+
+    ChamberAssembler::Pass::Scratch::Liquid::Liquid(
+      const ChamberAssembler &assembler)
       : free_surface(assembler.degree, assembler.degree + 2)
-      , support_values(*assembler.mapping,
-                       assembler.dof_handler->get_fe(),
-                       Quadrature<2>(free_surface.support_points()),
-                       update_values | update_quadrature_points)
-      , u_support(free_surface.support_points().size())
-      , psi(u_support.size())
+      , psi(free_surface.support_points().size())
     {
     }
 
@@ -484,6 +602,9 @@ namespace pneuma
       const unsigned int n    = assembler.parameters.chambers.size();
       const MPI_Comm     comm = assembler.dof_handler->get_communicator();
       measures.resize(n);
+      for (const auto &l : loads)
+        if (l.liquid)
+          heights = &assembler.heights(u);
       // The vectors dV/du of the last pass are zeroed if they have u's
       // global partition (membrane and cable dofs) on every rank, else
       // made anew: a new Trilinos vector per chamber and pass was 2 % of
@@ -519,6 +640,32 @@ namespace pneuma
                 m.q_liquid.reinit(owned, comm);
             }
         }
+      if (with_vectors)
+        for (unsigned int c = 0; c < n; ++c)
+          {
+            q_owned.emplace_back(measures[c].q);
+            q_liquid_owned.emplace_back(
+              loads[c].liquid ? LA::OwnedValues(measures[c].q_liquid)
+                              : LA::OwnedValues());
+          }
+    }
+
+    void
+    ChamberAssembler::Pass::add(
+      const Vector<double>                       &q,
+      const std::vector<types::global_dof_index> &dof_indices,
+      const LA::OwnedValues                      &owned,
+      LA::Vector                                 &target) const
+    {
+      bool direct = static_cast<bool>(owned);
+      for (unsigned int i = 0; direct && i < dof_indices.size(); ++i)
+        direct = owned.owns(dof_indices[i])
+                 && !constraints.is_constrained(dof_indices[i]);
+      if (!direct)
+        constraints.distribute_local_to_global(q, dof_indices, target);
+      else
+        for (unsigned int i = 0; i < dof_indices.size(); ++i)
+          owned[dof_indices[i]] += q[i];
     }
 
     void
@@ -556,14 +703,12 @@ namespace pneuma
       const auto &walls = assembler.walls_of(cell->material_id());
       if (walls.empty())
         return;
-      const FEValuesExtractors::Vector displacement(0);
-      const unsigned int               n_nodes = reference.n_nodes();
-      NodeDofs                         dof{};
+      const unsigned int n_nodes = reference.n_nodes();
+      NodeDofs           dof{};
       for (unsigned int i = 0; i < 3 * n_nodes; ++i)
         dof[reference.node(i)][reference.component(i)] = i;
       const auto [x_mean, n_mean] =
         reference_centre_and_normal(reference, cell_index);
-      bool support_ready = false;
       if (record.walls.size() < walls.size())
         {
           record.walls.resize(walls.size());
@@ -606,28 +751,23 @@ namespace pneuma
           wall.has_q_liquid = false;
           if (load.liquid)
             {
-              if (!support_ready)
-                {
-                  scratch.support_values.reinit(cell);
-                  scratch.support_values[displacement].get_function_values(
-                    u, scratch.u_support);
-                  support_ready = true;
-                }
-              for (unsigned int i = 0; i < scratch.psi.size(); ++i)
-                scratch.psi[i] =
-                  assembler.height(scratch.support_values.quadrature_point(i)
-                                   + scratch.u_support[i])
-                  - load.level;
+              auto         &liquid = scratch.liquid();
+              const double *z =
+                &heights->support[std::size_t(heights->first[cell_index])
+                                  * heights->n_support];
+              for (unsigned int i = 0; i < liquid.psi.size(); ++i)
+                liquid.psi[i] = z[i] - load.level;
               wall.q_liquid = 0;
               out.q         = with_vectors ? &wall.q_liquid : nullptr;
-              const auto at = scratch.free_surface.classify(scratch.psi);
+              const auto at = liquid.free_surface.classify(liquid.psi);
               integrate_wetted(at,
-                               scratch.free_surface,
+                               liquid.free_surface,
                                *assembler.mapping,
                                cell,
                                reference,
                                cell_index,
                                n_mean,
+                               heights->cell_nodes(cell_index),
                                dof,
                                local_u,
                                s,
@@ -657,16 +797,17 @@ namespace pneuma
           const Wall &wall = record.walls[k];
           auto       &m    = measures[wall.chamber];
           if (wall.has_q_liquid)
-            constraints.distribute_local_to_global(wall.q_liquid,
-                                                   dof_indices,
-                                                   m.q_liquid);
+            add(wall.q_liquid,
+                dof_indices,
+                q_liquid_owned[wall.chamber],
+                m.q_liquid);
           m.volume += wall.volume;
           m.wall_area += wall.area;
           m.liquid_volume += wall.liquid_volume;
           m.free_surface_area += wall.free_surface;
           m.wetted_area += wall.wetted;
           if (with_vectors)
-            constraints.distribute_local_to_global(wall.q, dof_indices, m.q);
+            add(wall.q, dof_indices, q_owned[wall.chamber], m.q);
         }
     }
 
@@ -700,6 +841,9 @@ namespace pneuma
                                std::vector<ChamberMeasures>    &measures,
                                const bool with_vectors) const
     {
+      if (!residual && !tangent && !with_vectors
+          && from_cache(u, loads, measures))
+        return;
       Pass pass(*this, u, constraints, loads, measures, with_vectors);
       const unsigned int n_dofs = dof_handler->get_fe().n_dofs_per_cell();
       FullMatrix<double> cell_matrix(n_dofs, n_dofs);
@@ -743,6 +887,148 @@ namespace pneuma
         residual->compress(VectorOperation::add);
       if (tangent)
         tangent->compress(VectorOperation::add);
+      // Every pass has all measures unless it skipped a liquid-only
+      // chamber's gas part (see Pass::compute()).
+      bool complete = true;
+      for (const auto &l : loads)
+        complete = complete && (l.gas || !with_vectors);
+      if (complete)
+        store(u, loads, measures);
+    }
+
+    bool
+    ChamberAssembler::from_cache(const LA::Vector               &u,
+                                 const std::vector<ChamberLoad> &loads,
+                                 std::vector<ChamberMeasures>   &measures) const
+    {
+      if (!cached(u, loads))
+        return false;
+      measures.resize(measure_cache.measures.size());
+      for (unsigned int c = 0; c < measures.size(); ++c)
+        {
+          const auto &k       = measure_cache.measures[c];
+          auto       &m       = measures[c];
+          m.volume            = k[0];
+          m.liquid_volume     = k[1];
+          m.free_surface_area = k[2];
+          m.wetted_area       = k[3];
+          m.wall_area         = k[4];
+        }
+      return true;
+    }
+
+    bool
+    ChamberAssembler::cached(const LA::Vector               &u,
+                             const std::vector<ChamberLoad> &loads) const
+    {
+      const auto               &cache = measure_cache;
+      const Epetra_MultiVector &e     = u.trilinos_vector();
+      bool same = cache.map && cache.map->PointSameAs(e.Map())
+                  && cache.u.size() == std::size_t(e.MyLength())
+                  && std::equal(cache.u.begin(), cache.u.end(), e[0])
+                  && cache.levels.size() == loads.size();
+      for (unsigned int c = 0; same && c < loads.size(); ++c)
+        same =
+          cache.levels[c].first == loads[c].liquid
+          && (!loads[c].liquid || cache.levels[c].second == loads[c].level);
+      return Utilities::MPI::min(static_cast<unsigned int>(same),
+                                 dof_handler->get_communicator())
+             > 0;
+    }
+
+    void
+    ChamberAssembler::store(const LA::Vector                   &u,
+                            const std::vector<ChamberLoad>     &loads,
+                            const std::vector<ChamberMeasures> &measures) const
+    {
+      auto                     &cache = measure_cache;
+      const Epetra_MultiVector &e     = u.trilinos_vector();
+      cache.map = std::make_unique<Epetra_BlockMap>(e.Map());
+      cache.u.assign(e[0], e[0] + e.MyLength());
+      cache.levels.clear();
+      for (const auto &l : loads)
+        cache.levels.emplace_back(l.liquid, l.level);
+      cache.measures.clear();
+      for (const auto &m : measures)
+        cache.measures.push_back(std::array<double, 5>{{m.volume,
+                                                        m.liquid_volume,
+                                                        m.free_surface_area,
+                                                        m.wetted_area,
+                                                        m.wall_area}});
+    }
+
+
+    const ChamberAssembler::SurfaceHeights &
+    ChamberAssembler::heights(const LA::Vector &u) const
+    {
+      auto                     &h = surface_heights;
+      const Epetra_MultiVector &e = u.trilinos_vector();
+      if (h.map && h.map->PointSameAs(e.Map())
+          && h.u.size() == std::size_t(e.MyLength())
+          && std::equal(h.u.begin(), h.u.end(), e[0]))
+        return h;
+      h.map = std::make_unique<Epetra_BlockMap>(e.Map());
+      h.u.assign(e[0], e[0] + e.MyLength());
+      h.serial                       = ++n_height_states;
+      const auto                 &fe = dof_handler->get_fe();
+      const FreeSurfaceQuadrature free_surface(degree, degree + 2);
+      FEValues<2, 3>              support_values(*mapping,
+                                    fe,
+                                    Quadrature<2>(
+                                      free_surface.support_points()),
+                                    update_values | update_quadrature_points);
+      FEValues<2, 3>              node_values(
+        *mapping,
+        fe,
+        Quadrature<2>(fe.base_element(0).get_unit_support_points()),
+        update_values | update_quadrature_points);
+      const FEValuesExtractors::Vector displacement(0);
+      h.n_support = support_values.n_quadrature_points;
+      h.n_nodes   = node_values.n_quadrature_points;
+      std::vector<Tensor<1, 3>> u_q(std::max(h.n_support, h.n_nodes));
+      h.first.clear();
+      h.support.clear();
+      h.nodes.clear();
+      h.positions.clear();
+      const auto heights_at = [&](FEValues<2, 3>        &values,
+                                  const auto            &cell,
+                                  std::vector<double>   &out,
+                                  std::vector<Point<3>> *positions) {
+        values.reinit(cell);
+        u_q.resize(values.n_quadrature_points);
+        values[displacement].get_function_values(u, u_q);
+        for (unsigned int k = 0; k < u_q.size(); ++k)
+          {
+            out.push_back(height(values.quadrature_point(k) + u_q[k]));
+            if (positions)
+              positions->push_back(values.quadrature_point(k));
+          }
+      };
+      // A cut cell is integrated from its nodes' reference positions
+      // where the mapping's support points are the nodes (see CutPoints).
+      const auto *q_mapping = dynamic_cast<const MappingQ<2, 3> *>(mapping);
+      h.cut_from_nodes =
+        q_mapping && fe.degree <= 2 && q_mapping->get_degree() == fe.degree;
+      for (const auto &cell : dof_handler->active_cell_iterators())
+        {
+          if (!cell->is_locally_owned())
+            continue;
+          // The walls of the chambers that hold a liquid or are connected
+          // to one.
+          bool wall = false;
+          for (const auto &[c, rs] : walls_of(cell->material_id()))
+            {
+              const auto &def = parameters.chambers[c];
+              wall            = wall || def.has_liquid()
+                     || parameters.chambers[def.connected_to].has_liquid();
+            }
+          h.first.push_back(wall ? int(h.nodes.size() / h.n_nodes) : -1);
+          if (!wall)
+            continue;
+          heights_at(support_values, cell, h.support, nullptr);
+          heights_at(node_values, cell, h.nodes, &h.positions);
+        }
+      return h;
     }
 
     std::pair<double, double>
@@ -756,15 +1042,9 @@ namespace pneuma
       NodeDofs                           dof{};
       for (unsigned int i = 0; i < n_dofs; ++i)
         dof[ref.node(i)][ref.component(i)] = i;
-      FreeSurfaceQuadrature            free_surface(degree, degree + 2);
-      FEValues<2, 3>                   support_values(*mapping,
-                                    fe,
-                                    Quadrature<2>(
-                                      free_surface.support_points()),
-                                    update_values | update_quadrature_points);
-      const FEValuesExtractors::Vector displacement(0);
-      std::vector<Tensor<1, 3>> u_support(free_surface.support_points().size());
-      std::vector<double>       psi(u_support.size());
+      FreeSurfaceQuadrature                free_surface(degree, degree + 2);
+      const SurfaceHeights                &h = heights(u);
+      std::vector<double>                  psi(h.n_support);
       std::vector<types::global_dof_index> dof_indices(n_dofs);
       std::vector<double>                  local_u(n_dofs);
       ChamberLoad                          load;
@@ -783,12 +1063,10 @@ namespace pneuma
             {
               if (chamber != c)
                 continue;
-              support_values.reinit(cell);
-              support_values[displacement].get_function_values(u, u_support);
+              const double *z =
+                &h.support[std::size_t(h.first[index]) * h.n_support];
               for (unsigned int k = 0; k < psi.size(); ++k)
-                psi[k] =
-                  height(support_values.quadrature_point(k) + u_support[k])
-                  - level;
+                psi[k] = z[k] - level;
               const auto at = free_surface.classify(psi);
               if (at == FreeSurfaceQuadrature::Location::dry)
                 continue;
@@ -806,6 +1084,7 @@ namespace pneuma
                                ref,
                                index,
                                n_mean,
+                               h.cell_nodes(index),
                                dof,
                                local_u,
                                s,
@@ -824,30 +1103,23 @@ namespace pneuma
     ChamberAssembler::height_range(const LA::Vector  &u,
                                    const unsigned int c) const
     {
-      const auto                      &fe = dof_handler->get_fe();
-      FEValues<2, 3>                   values(*mapping,
-                            fe,
-                            Quadrature<2>(
-                              fe.base_element(0).get_unit_support_points()),
-                            update_values | update_quadrature_points);
-      const FEValuesExtractors::Vector displacement(0);
-      std::vector<Tensor<1, 3>>        u_q(values.n_quadrature_points);
-      double lo = std::numeric_limits<double>::max(), hi = -lo;
+      const SurfaceHeights &h  = heights(u);
+      double                lo = std::numeric_limits<double>::max(), hi = -lo;
+      unsigned int          index = 0;
       for (const auto &cell : dof_handler->active_cell_iterators())
         if (cell->is_locally_owned())
-          for (const auto &[chamber, rs] : walls_of(cell->material_id()))
-            if (chamber == c)
-              {
-                values.reinit(cell);
-                values[displacement].get_function_values(u, u_q);
-                for (unsigned int k = 0; k < u_q.size(); ++k)
+          {
+            const int first = h.first[index++];
+            for (const auto &[chamber, rs] : walls_of(cell->material_id()))
+              if (chamber == c)
+                for (unsigned int k = 0; k < h.n_nodes; ++k)
                   {
                     const double z =
-                      height(values.quadrature_point(k) + u_q[k]);
+                      h.nodes[std::size_t(first) * h.n_nodes + k];
                     lo = std::min(lo, z);
                     hi = std::max(hi, z);
                   }
-              }
+          }
       const MPI_Comm comm = dof_handler->get_communicator();
       return {Utilities::MPI::min(lo, comm), Utilities::MPI::max(hi, comm)};
     }

@@ -273,6 +273,7 @@ namespace pneuma
       const std::set<types::global_dof_index>    &junction_copies,
       AffineConstraints<double>                  &constraints) const
     {
+      held = HeldDofs(); // (a new mesh or numbering)
       // The mapping does not matter for homogeneous values.
       const auto values =
         prescribed_dofs(StaticMappingQ1<2, 3>::mapping, dof_handler, 0.);
@@ -325,10 +326,30 @@ namespace pneuma
       const double            t,
       LA::Vector             &solution) const
     {
-      const auto values = prescribed_dofs(mapping, dof_handler, t);
-      for (const auto &v : values)
-        if (solution.locally_owned_elements().is_element(v.first))
-          solution[v.first] = v.second;
+      const bool static_supports =
+        displaced_boundaries.empty() && displaced_regions.empty();
+      const types::global_cell_index n_cells =
+        dof_handler.get_triangulation().n_global_active_cells();
+      if (static_supports
+          && (held.dof_handler != &dof_handler
+              || held.n_dofs != dof_handler.n_dofs()
+              || held.n_cells != n_cells))
+        {
+          held.dof_handler = &dof_handler;
+          held.n_dofs      = dof_handler.n_dofs();
+          held.n_cells     = n_cells;
+          held.owned.clear();
+          for (const auto &v : prescribed_dofs(mapping, dof_handler, t))
+            if (solution.locally_owned_elements().is_element(v.first))
+              held.owned.push_back(v.first);
+        }
+      if (static_supports)
+        for (const auto i : held.owned)
+          solution[i] = 0.;
+      else
+        for (const auto &v : prescribed_dofs(mapping, dof_handler, t))
+          if (solution.locally_owned_elements().is_element(v.first))
+            solution[v.first] = v.second;
       solution.compress(VectorOperation::insert);
     }
   } // namespace loads

@@ -208,8 +208,10 @@ namespace pneuma
     MaterialRegions::operator[](const types::material_id id) const
     {
       const auto it = regions.find(id);
-      check_input(
-        it != regions.end(),
+      if (it != regions.end())
+        return it->second;
+      // (The message only when it is needed: this runs for every cell.)
+      throw InputError(
         "Materials/Region " + std::to_string(id),
         "the mesh has cells with material id " + std::to_string(id)
           + " but the input has no such subsection (regions given: " +
@@ -220,7 +222,6 @@ namespace pneuma
             return s;
           }()
           + ")");
-      return it->second;
     }
 
     bool

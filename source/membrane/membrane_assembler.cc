@@ -127,6 +127,7 @@ namespace pneuma
               cell_index  = other.cell_index;
               fast        = other.fast;
               condensed   = other.condensed;
+              owned       = other.owned;
               dof_indices = other.dof_indices;
               local_u     = other.local_u;
               matrix      = other.matrix;
@@ -140,9 +141,12 @@ namespace pneuma
           return *this;
         }
 
-        unsigned int                                    cell_index = 0;
-        bool                                            fast       = false;
-        bool                                            condensed  = false;
+        unsigned int cell_index = 0;
+        bool         fast       = false;
+        bool         condensed  = false;
+        /// No matrix and no constrained dof: the vectors by local index
+        /// where their rows are owned.
+        bool                                            owned = false;
         std::vector<types::global_dof_index>            dof_indices;
         std::vector<double>                             local_u;
         FullMatrix<double>                              matrix;
@@ -171,6 +175,10 @@ namespace pneuma
         /// once.
         bool   uniform_pressure;
         double pressure_value;
+        /// The displacement's values by local index (nullptr: by global
+        /// index), and the local index of each cell dof.
+        const double             *u_values  = nullptr;
+        const LA::GhostedIndices *u_indices = nullptr;
       };
 
       /// The shared data of an assembly at time @p t (loaded: the loads
@@ -222,9 +230,12 @@ namespace pneuma
           ctx.ref.dof_indices(cell_index);
         copy.cell_index = cell_index;
         std::copy(cell_dofs, cell_dofs + ctx.n_dofs, copy.dof_indices.begin());
+        const int *local =
+          ctx.u_values ? ctx.u_indices->cell(cell_index) : nullptr;
         for (unsigned int i = 0; i < ctx.n_dofs; ++i)
           {
-            copy.local_u[i] = u[copy.dof_indices[i]];
+            copy.local_u[i] =
+              local ? ctx.u_values[local[i]] : u[copy.dof_indices[i]];
             scratch.u_node[ctx.ref.node(i)][ctx.ref.component(i)] =
               copy.local_u[i];
           }
@@ -493,6 +504,26 @@ namespace pneuma
         double                          *residual_values;
         double                          *external_values;
         bool                             want_matrix;
+        /// Without a matrix: the owned values of the residual and the
+        /// applied loads.
+        LA::OwnedValues residual_owned, external_owned;
+
+        /// A vector of a cell with no constrained dof and no matrix: each
+        /// entry by local index where owned here, else through @p target.
+        void
+        add_owned(const CellCopy        &copy,
+                  const Vector<double>  &cell_vector,
+                  const LA::OwnedValues &owned,
+                  LA::Vector            *target) const
+        {
+          if (!target)
+            return;
+          for (unsigned int i = 0; i < cell_vector.size(); ++i)
+            if (owned.owns(copy.dof_indices[i]))
+              owned[copy.dof_indices[i]] += cell_vector[i];
+            else
+              (*target)(copy.dof_indices[i]) += cell_vector[i];
+        }
 
         /// A cell vector: by local index on the fast path, else through
         /// the constraints.
@@ -520,6 +551,12 @@ namespace pneuma
         {
           for (unsigned int k = 0; k < request.cell_terms.size(); ++k)
             request.cell_terms[k]->commit(*copy.records[k], copy.dof_indices);
+          if (copy.owned)
+            {
+              add_owned(copy, copy.residual, residual_owned, request.residual);
+              add_owned(copy, copy.external, external_owned, request.external);
+              return;
+            }
           if (copy.fast)
             {
               positions.add(copy.cell_index, &copy.matrix(0, 0));
@@ -548,6 +585,31 @@ namespace pneuma
       };
     } // namespace
 
+    namespace
+    {
+      /// Let the cells of @p ctx read @p u by local index (see
+      /// LA::GhostedIndices), where all their dofs are in @p u's range.
+      void
+      read_by_local_index(const LA::Vector   &u,
+                          LA::GhostedIndices &indices,
+                          CellContext        &ctx)
+      {
+        ctx.u_values  = indices.values(u,
+                                      ctx.ref.dof_indices(0),
+                                      ctx.ref.n_cells(),
+                                      ctx.n_dofs);
+        ctx.u_indices = &indices;
+      }
+
+      /// Direct access to @p v's owned values for an assembly without a
+      /// matrix (none with one, or without @p v).
+      LA::OwnedValues
+      owned_values(const CellContext &ctx, LA::Vector *v)
+      {
+        return ctx.want_matrix || !v ? LA::OwnedValues() : LA::OwnedValues(*v);
+      }
+    } // namespace
+
     const RegionMaterial &
     MembraneAssembler::cell_material(const types::material_id id,
                                      const bool               loaded) const
@@ -567,14 +629,15 @@ namespace pneuma
       const QGauss<2> quadrature(degree + 1);
       const QGauss<1> face_quadrature(degree + 1);
       loads.set_time(request.time);
-      const CellContext ctx    = make_context(reference_geometry(),
-                                           loads,
-                                           form_finding_laws.empty(),
-                                           request,
-                                           quadrature.size(),
-                                           fe.n_dofs_per_cell());
-      const auto       &ref    = ctx.ref;
-      const bool        direct = ctx.want_matrix
+      CellContext ctx = make_context(reference_geometry(),
+                                     loads,
+                                     form_finding_laws.empty(),
+                                     request,
+                                     quadrature.size(),
+                                     fe.n_dofs_per_cell());
+      const auto &ref = ctx.ref;
+      read_by_local_index(u, ghosted_indices, ctx);
+      const bool direct = ctx.want_matrix
                           && positions.update(*request.tangent,
                                               ref.dof_indices(0),
                                               ref.n_cells(),
@@ -615,9 +678,12 @@ namespace pneuma
                                                        : nullptr,
                                       *scratch.terms[k],
                                       *copy.records[k]);
-        copy.fast = direct && positions.direct(cell_index);
-        for (unsigned int i = 0; copy.fast && i < ctx.n_dofs; ++i)
-          copy.fast = !constraints.is_constrained(copy.dof_indices[i]);
+        // Cells without constrained dofs take a direct path.
+        bool free = true;
+        for (unsigned int i = 0; free && i < ctx.n_dofs; ++i)
+          free = !constraints.is_constrained(copy.dof_indices[i]);
+        copy.fast  = free && direct && positions.direct(cell_index);
+        copy.owned = free && !ctx.want_matrix;
         copy.condensed =
           direct && !copy.fast && positions.condensed(cell_index);
       };
@@ -630,7 +696,9 @@ namespace pneuma
                               direct && request.external
                                 ? positions.local_values(*request.external)
                                 : nullptr,
-                              ctx.want_matrix};
+                              ctx.want_matrix,
+                              owned_values(ctx, request.residual),
+                              owned_values(ctx, request.external)};
 
       WorkStream::run(cells.cbegin(),
                       cells.cend(),

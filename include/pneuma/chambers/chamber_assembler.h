@@ -37,7 +37,14 @@
 #include <pneuma/chambers/chamber_parameters.h>
 #include <pneuma/chambers/free_surface_quadrature.h>
 #include <pneuma/core/linear_algebra.h>
+#include <pneuma/core/local_access.h>
 #include <pneuma/geometry/scene_generator.h>
+
+#include <Epetra_BlockMap.h>
+
+#include <array>
+#include <cstdint>
+#include <memory>
 #include <pneuma/membrane/cell_terms.h>
 #include <pneuma/membrane/reference_geometry.h>
 
@@ -115,6 +122,10 @@ namespace pneuma
                std::vector<ChamberMeasures>    &measures,
                const bool                       with_vectors) const;
 
+    private:
+      struct SurfaceHeights;
+
+    public:
       /**
        * One pass over the cells, for callers that loop themselves (the
        * membrane assembler adds these terms to its cell matrices, so that
@@ -130,10 +141,21 @@ namespace pneuma
         struct Scratch : membrane::CellTerms::Scratch
         {
           explicit Scratch(const ChamberAssembler &assembler);
-          FreeSurfaceQuadrature     free_surface;
-          FEValues<2, 3>            support_values;
-          std::vector<Tensor<1, 3>> u_support;
-          std::vector<double>       psi;
+          /// The free-surface data of a liquid's walls.
+          struct Liquid
+          {
+            explicit Liquid(const ChamberAssembler &assembler);
+            FreeSurfaceQuadrature free_surface;
+            std::vector<double>   psi;
+          };
+          /// The free-surface data, made on first use (a gas alone needs
+          /// none: building it was 4 % of an explicit step).
+          Liquid &
+          liquid();
+
+        private:
+          const ChamberAssembler &assembler;
+          std::unique_ptr<Liquid> liquid_data;
         };
         /// One wall of one cell: its chamber, its part of the measures and
         /// of dV/du (and dV_l/du).
@@ -198,6 +220,19 @@ namespace pneuma
         const bool                       with_vectors;
         Scratch                          own_scratch;
         Record                           own_record;
+        /// The walls' heights at u (with a liquid).
+        const SurfaceHeights *heights = nullptr;
+        /// The owned values of each chamber's q and q_liquid.
+        std::vector<LA::OwnedValues> q_owned, q_liquid_owned;
+
+        /// Add a wall's cell vector @p q to @p target (owned values
+        /// @p owned) through the constraints, or by local index if none
+        /// of its dofs is constrained and all are owned here.
+        void
+        add(const Vector<double>                       &q,
+            const std::vector<types::global_dof_index> &dof_indices,
+            const LA::OwnedValues                      &owned,
+            LA::Vector                                 &target) const;
       };
 
       /// Liquid volume below @p level in chamber @p c and its derivative
@@ -206,6 +241,22 @@ namespace pneuma
       liquid_volume(const LA::Vector  &u,
                     const unsigned int c,
                     const double       level) const;
+
+      /// A number that identifies the state @p u among those the wall
+      /// heights were found for (the same number for the same values on
+      /// this rank; a new one for other values).
+      std::uint64_t
+      state(const LA::Vector &u) const
+      {
+        return heights(u).serial;
+      }
+
+      /// The mesh's communicator.
+      MPI_Comm
+      communicator() const
+      {
+        return dof_handler->get_communicator();
+      }
 
       /// Lowest and highest wall height z = -g.x / |g| of chamber @p c.
       std::pair<double, double>
@@ -239,6 +290,80 @@ namespace pneuma
       double gravity_magnitude = 0.;
       std::map<types::material_id, std::vector<std::pair<unsigned int, int>>>
         membership;
+
+      /**
+       * The measures of the last pass that asked for measures alone, and
+       * the state and free-surface levels it was made at: an explicit step
+       * asks for them twice at one state (the border of the step, the
+       * record at its end), each a pass over all walls.
+       */
+      struct MeasureCache
+      {
+        std::unique_ptr<Epetra_BlockMap>     map;
+        std::vector<double>                  u;
+        std::vector<std::pair<bool, double>> levels;
+        std::vector<std::array<double, 5>>   measures;
+      };
+      mutable MeasureCache measure_cache;
+
+      /**
+       * The heights of the walls of liquid chambers at one state, per
+       * owned cell (in the reference data's order): at the free surface's
+       * support points (to classify a cell) and at the nodes (the height
+       * range). The level search evaluates the liquid volume at several
+       * levels for one state, and each evaluation mapped every wall's
+       * support points anew (most of an explicit step with a liquid).
+       */
+      struct SurfaceHeights
+      {
+        std::unique_ptr<Epetra_BlockMap> map;
+        std::vector<double>              u;
+        /// Per owned cell: its first entry, or -1 (not a liquid's wall).
+        std::vector<int>    first;
+        std::vector<double> support, nodes;
+        unsigned int        n_support = 0, n_nodes = 0;
+        /// The reference positions of the nodes (as nodes), and whether
+        /// a cut cell is integrated from them.
+        std::vector<Point<3>> positions;
+        bool                  cut_from_nodes = false;
+        /// Which of the states found since the start this is.
+        std::uint64_t serial = 0;
+
+        /// The reference node positions of owned cell @p k for a cut cell,
+        /// or nullptr (integrate with FEValues).
+        const Point<3> *
+        cell_nodes(const unsigned int k) const
+        {
+          return cut_from_nodes && first[k] >= 0
+                   ? &positions[std::size_t(first[k]) * n_nodes]
+                   : nullptr;
+        }
+      };
+      mutable SurfaceHeights surface_heights;
+      /// The number of states the heights were found for.
+      mutable std::uint64_t n_height_states = 0;
+
+      /// The heights at @p u (found anew if @p u is not the last state).
+      const SurfaceHeights &
+      heights(const LA::Vector &u) const;
+
+      /// The measures of a pass for measures alone from the cache, if it
+      /// holds those of @p u and @p loads (see cached()).
+      bool
+      from_cache(const LA::Vector               &u,
+                 const std::vector<ChamberLoad> &loads,
+                 std::vector<ChamberMeasures>   &measures) const;
+
+      /// Are @p u and the levels of @p loads those of the cache (on every
+      /// rank)?
+      bool
+      cached(const LA::Vector &u, const std::vector<ChamberLoad> &loads) const;
+
+      /// Keep @p measures made at @p u and @p loads.
+      void
+      store(const LA::Vector                   &u,
+            const std::vector<ChamberLoad>     &loads,
+            const std::vector<ChamberMeasures> &measures) const;
     };
   } // namespace chambers
 } // namespace pneuma

@@ -33,6 +33,7 @@
 #include <pneuma/core/capabilities.h>
 #include <pneuma/solvers/border.h>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -183,6 +184,16 @@ namespace pneuma
         bool                      sealed = false;
         bool                      empty  = false; ///< no liquid: h fixed
         GasState                  old;            ///< last converged state
+        /// The last level search that converged at its final level h: the
+        /// state (ChamberAssembler::state()), time and volume it was for.
+        /// Searching again from h for these finds h at once, so the search
+        /// is skipped (an explicit step searches twice at one state).
+        struct
+        {
+          std::uint64_t state = 0;
+          double        time = 0., target = 0., h = 0.;
+          bool          valid = false;
+        } found;
       };
 
       /// Sum member measures into group totals.

@@ -112,6 +112,22 @@ namespace pneuma
       std::set<types::material_id>                          displaced_regions;
       std::set<types::boundary_id>                  displaced_boundaries;
       std::unique_ptr<Functions::ParsedFunction<3>> displacement_function;
+
+      /**
+       * Without prescribed displacements the supports hold the same dofs
+       * at zero at every time: the owned ones are kept for the dof
+       * numbering (number of dofs and cells) they were found for (finding
+       * them searches every cell per fixed point: 4 % of an explicit
+       * step). add_update_constraints() (a new mesh) forgets them.
+       */
+      struct HeldDofs
+      {
+        const DoFHandler<2, 3>              *dof_handler = nullptr;
+        types::global_dof_index              n_dofs      = 0;
+        types::global_cell_index             n_cells     = 0;
+        std::vector<types::global_dof_index> owned;
+      };
+      mutable HeldDofs held;
     };
   } // namespace loads
 } // namespace pneuma

@@ -23,6 +23,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <pneuma/core/linear_algebra.h>
+#include <pneuma/core/local_access.h>
 #include <pneuma/core/matrix_positions.h>
 #include <pneuma/geometry/scene_generator.h>
 #include <pneuma/loads/loads.h>
@@ -155,6 +156,8 @@ namespace pneuma
       std::map<types::material_id, RegionMaterial> plain_laws;
       mutable std::unique_ptr<ReferenceGeometry>   reference;
       mutable LA::MatrixPositions                  positions;
+      /// Local indices of the cells' dofs in the ghosted displacement.
+      mutable LA::GhostedIndices ghosted_indices;
     };
   } // namespace membrane
 } // namespace pneuma
