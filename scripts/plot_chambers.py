@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Plot chamber volumes and pressures of a pneuma run against pseudo time.
+"""Plot chamber volumes and pressures of a pneuma run against (pseudo) time.
 
 Usage: scripts/plot_chambers.py OUTPUT_DIR [OUTPUT_DIR ...] [-o FILE.png]
 
@@ -66,7 +66,7 @@ def main(argv):
             sys.exit(f"plot_chambers: {d}/history.csv has no chamber columns")
     top.set_ylabel("volume / initial chamber volume")
     bottom.set_ylabel("gauge gas pressure [bar]")
-    bottom.set_xlabel("pseudo time")
+    bottom.set_xlabel("t (pseudo time; seconds in explicit stages)")
     for ax in (top, bottom):
         ax.grid(True)
         ax.legend(fontsize=7)
