@@ -189,33 +189,6 @@ namespace pneuma
         };
       }
 
-      /// The points of @p fe_values (reinit'ed on a cell; values,
-      /// gradients, normals, points, JxW), with the frame about the normal
-      /// turned by @p orientation (+-1).
-      auto
-      fe_points(const FEValues<2, 3> &fe_values,
-                const NodeDofs       &dof,
-                const unsigned int    n_nodes,
-                const double          orientation)
-      {
-        return [&, n_nodes, orientation](const unsigned int q, WallPoint &P) {
-          const membrane::TangentFrame frame =
-            membrane::tangent_frame(orientation * fe_values.normal_vector(q));
-          P.E[0] = frame.e[0];
-          P.E[1] = frame.e[1];
-          P.X    = fe_values.quadrature_point(q);
-          P.JxW  = fe_values.JxW(q);
-          for (unsigned int a = 0; a < n_nodes; ++a)
-            {
-              const Tensor<1, 3> grad =
-                fe_values.shape_grad_component(dof[a][0], q, 0);
-              P.N[a]     = fe_values.shape_value_component(dof[a][0], q, 0);
-              P.dN[a][0] = grad * frame.e[0];
-              P.dN[a][1] = grad * frame.e[1];
-            }
-        };
-      }
-
       /// Mean reference position and normal E_1 x E_2 of a cell of the
       /// reference data.
       std::pair<Point<3>, Tensor<1, 3>>
@@ -347,12 +320,10 @@ namespace pneuma
       /// The hydrostatic terms of one wall over its wetted part: the whole
       /// cell (its reference points) if wet, the generated rule if cut
       /// (with the frame turned to the reference normal @p normal; from
-      /// the reference positions of the cell's nodes @p nodes, or with
-      /// FEValues if nullptr).
+      /// the reference positions of the cell's nodes @p nodes).
       void
       integrate_wetted(const FreeSurfaceQuadrature::Location at,
                        const FreeSurfaceQuadrature          &free_surface,
-                       const Mapping<2, 3>                  &mapping,
                        const DoFHandler<2, 3>::active_cell_iterator &cell,
                        const membrane::ReferenceGeometry            &reference,
                        const unsigned int                            cell_index,
@@ -383,27 +354,13 @@ namespace pneuma
         if (at == FreeSurfaceQuadrature::Location::wet)
           wetted(reference.n_q_points(),
                  reference_points(reference, cell_index));
-        else if (at == FreeSurfaceQuadrature::Location::cut && nodes)
+        else if (at == FreeSurfaceQuadrature::Location::cut)
           {
             const CutPoints cut(cell->get_fe().base_element(0),
                                 free_surface.wet_quadrature(),
                                 nodes,
                                 normal);
             wetted(cut.size(), cut.points());
-          }
-        else if (at == FreeSurfaceQuadrature::Location::cut)
-          {
-            FEValues<2, 3> cut_values(mapping,
-                                      cell->get_fe(),
-                                      free_surface.wet_quadrature(),
-                                      wall_flags);
-            cut_values.reinit(cell);
-            Tensor<1, 3> n;
-            for (unsigned int q = 0; q < cut_values.n_quadrature_points; ++q)
-              n += cut_values.normal_vector(q);
-            wetted(
-              cut_values.n_quadrature_points,
-              fe_points(cut_values, dof, n_nodes, n * normal >= 0. ? 1. : -1.));
           }
       }
     } // namespace
@@ -762,7 +719,6 @@ namespace pneuma
               const auto at = liquid.free_surface.classify(liquid.psi);
               integrate_wetted(at,
                                liquid.free_surface,
-                               *assembler.mapping,
                                cell,
                                reference,
                                cell_index,
@@ -921,12 +877,8 @@ namespace pneuma
     ChamberAssembler::cached(const LA::Vector               &u,
                              const std::vector<ChamberLoad> &loads) const
     {
-      const auto               &cache = measure_cache;
-      const Epetra_MultiVector &e     = u.trilinos_vector();
-      bool same = cache.map && cache.map->PointSameAs(e.Map())
-                  && cache.u.size() == std::size_t(e.MyLength())
-                  && std::equal(cache.u.begin(), cache.u.end(), e[0])
-                  && cache.levels.size() == loads.size();
+      const auto &cache = measure_cache;
+      bool same = cache.u.matches(u) && cache.levels.size() == loads.size();
       for (unsigned int c = 0; same && c < loads.size(); ++c)
         same =
           cache.levels[c].first == loads[c].liquid
@@ -941,10 +893,8 @@ namespace pneuma
                             const std::vector<ChamberLoad>     &loads,
                             const std::vector<ChamberMeasures> &measures) const
     {
-      auto                     &cache = measure_cache;
-      const Epetra_MultiVector &e     = u.trilinos_vector();
-      cache.map = std::make_unique<Epetra_BlockMap>(e.Map());
-      cache.u.assign(e[0], e[0] + e.MyLength());
+      auto &cache = measure_cache;
+      cache.u.take(u);
       cache.levels.clear();
       for (const auto &l : loads)
         cache.levels.emplace_back(l.liquid, l.level);
@@ -961,14 +911,10 @@ namespace pneuma
     const ChamberAssembler::SurfaceHeights &
     ChamberAssembler::heights(const LA::Vector &u) const
     {
-      auto                     &h = surface_heights;
-      const Epetra_MultiVector &e = u.trilinos_vector();
-      if (h.map && h.map->PointSameAs(e.Map())
-          && h.u.size() == std::size_t(e.MyLength())
-          && std::equal(h.u.begin(), h.u.end(), e[0]))
+      auto &h = surface_heights;
+      if (h.u.matches(u))
         return h;
-      h.map = std::make_unique<Epetra_BlockMap>(e.Map());
-      h.u.assign(e[0], e[0] + e.MyLength());
+      h.u.take(u);
       h.serial                       = ++n_height_states;
       const auto                 &fe = dof_handler->get_fe();
       const FreeSurfaceQuadrature free_surface(degree, degree + 2);
@@ -1004,11 +950,13 @@ namespace pneuma
               positions->push_back(values.quadrature_point(k));
           }
       };
-      // A cut cell is integrated from its nodes' reference positions
-      // where the mapping's support points are the nodes (see CutPoints).
+      // A cut cell is integrated from its nodes' reference positions:
+      // the mapping's support points must be the nodes (see CutPoints).
       const auto *q_mapping = dynamic_cast<const MappingQ<2, 3> *>(mapping);
-      h.cut_from_nodes =
-        q_mapping && fe.degree <= 2 && q_mapping->get_degree() == fe.degree;
+      AssertThrow(q_mapping && fe.degree <= 2
+                    && q_mapping->get_degree() == fe.degree,
+                  ExcMessage("the free surface needs MappingQ of the "
+                             "element's degree (1 or 2)"));
       for (const auto &cell : dof_handler->active_cell_iterators())
         {
           if (!cell->is_locally_owned())
@@ -1079,7 +1027,6 @@ namespace pneuma
                 wall_sign(geometry, parameters.chambers[c], rs, x_mean, n_mean);
               integrate_wetted(at,
                                free_surface,
-                               *mapping,
                                cell,
                                ref,
                                index,

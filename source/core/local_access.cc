@@ -2,6 +2,8 @@
 
 #include <Epetra_FEVector.h>
 
+#include <algorithm>
+
 namespace pneuma
 {
   namespace LA
@@ -17,6 +19,23 @@ namespace pneuma
       values = e[0];
       first  = map.MinMyGID64();
       n      = map.NumMyElements();
+    }
+
+    bool
+    VectorSnapshot::matches(const Vector &u) const
+    {
+      const Epetra_MultiVector &e = u.trilinos_vector();
+      return map && map->PointSameAs(e.Map())
+             && values.size() == std::size_t(e.MyLength())
+             && std::equal(values.begin(), values.end(), e[0]);
+    }
+
+    void
+    VectorSnapshot::take(const Vector &u)
+    {
+      const Epetra_MultiVector &e = u.trilinos_vector();
+      map                         = std::make_unique<Epetra_BlockMap>(e.Map());
+      values.assign(e[0], e[0] + e.MyLength());
     }
 
     const double *

@@ -299,8 +299,7 @@ namespace pneuma
        */
       struct MeasureCache
       {
-        std::unique_ptr<Epetra_BlockMap>     map;
-        std::vector<double>                  u;
+        LA::VectorSnapshot                   u;
         std::vector<std::pair<bool, double>> levels;
         std::vector<std::array<double, 5>>   measures;
       };
@@ -316,27 +315,22 @@ namespace pneuma
        */
       struct SurfaceHeights
       {
-        std::unique_ptr<Epetra_BlockMap> map;
-        std::vector<double>              u;
+        LA::VectorSnapshot u;
         /// Per owned cell: its first entry, or -1 (not a liquid's wall).
         std::vector<int>    first;
         std::vector<double> support, nodes;
         unsigned int        n_support = 0, n_nodes = 0;
-        /// The reference positions of the nodes (as nodes), and whether
-        /// a cut cell is integrated from them.
+        /// The reference positions of the nodes (as nodes).
         std::vector<Point<3>> positions;
-        bool                  cut_from_nodes = false;
         /// Which of the states found since the start this is.
         std::uint64_t serial = 0;
 
-        /// The reference node positions of owned cell @p k for a cut cell,
-        /// or nullptr (integrate with FEValues).
+        /// The reference node positions of owned cell @p k (a liquid's
+        /// wall).
         const Point<3> *
         cell_nodes(const unsigned int k) const
         {
-          return cut_from_nodes && first[k] >= 0
-                   ? &positions[std::size_t(first[k]) * n_nodes]
-                   : nullptr;
+          return &positions[std::size_t(first[k]) * n_nodes];
         }
       };
       mutable SurfaceHeights surface_heights;

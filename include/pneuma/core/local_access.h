@@ -70,6 +70,28 @@ namespace pneuma
       dealii::types::global_dof_index n      = 0;
     };
 
+    /**
+     * A copy of a vector's local values (owned and ghosts) and its layout,
+     * to tell whether a later vector holds the same state on this rank
+     * (for results computed from it alone: the chambers' measures and
+     * wall heights).
+     */
+    class VectorSnapshot
+    {
+    public:
+      /// Does @p u have the layout and the local values taken last?
+      bool
+      matches(const Vector &u) const;
+
+      /// Keep @p u's layout and local values.
+      void
+      take(const Vector &u);
+
+    private:
+      std::unique_ptr<Epetra_BlockMap> map;
+      std::vector<double>              values;
+    };
+
     class GhostedIndices
     {
     public:
