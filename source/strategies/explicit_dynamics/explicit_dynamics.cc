@@ -11,6 +11,8 @@
 #include <cmath>
 #include <csignal>
 #include <sstream>
+#include <tuple>
+#include <utility>
 
 namespace pneuma
 {
@@ -65,8 +67,10 @@ namespace pneuma
                         Patterns::Double(0., 1.));
       prm.add_parameter("Damping frequency",
                         settings.damping_frequency,
-                        "f [Hz] at which the Damping ratio holds (the "
-                        "lowest mode's, e.g. from an eigen analysis).",
+                        "f [Hz] at which the Damping ratio holds; 0: the "
+                        "lowest natural frequency of the state each "
+                        "explicit stage starts from (a modal analysis "
+                        "there, printed).",
                         Patterns::Double(0.));
       prm.add_parameter("Output interval",
                         settings.output_interval,
@@ -92,11 +96,8 @@ namespace pneuma
       check_input(settings.safety > 0.,
                   "Explicit dynamics/Time step safety factor",
                   "must be positive");
-      check_input(settings.damping_ratio == 0.
-                    || settings.damping_frequency > 0.,
-                  "Explicit dynamics/Damping frequency",
-                  "a Damping ratio needs the frequency it holds at (> 0)");
-      alpha = 4. * M_PI * settings.damping_ratio * settings.damping_frequency;
+      damping_frequency = settings.damping_frequency;
+      alpha = 4. * M_PI * settings.damping_ratio * damping_frequency;
     }
 
     void
@@ -239,6 +240,9 @@ namespace pneuma
       // (the same steps as the run it continues).
       if (model.n_border() > 0)
         x.border = model.border_for(x.field, t);
+      if (!resuming && settings.damping_ratio > 0.
+          && settings.damping_frequency == 0.)
+        damp_lowest_mode(run, x, t);
       if (!resuming)
         motion.stable_step = estimate_step(model, x, t);
       else
@@ -299,8 +303,8 @@ namespace pneuma
     }
 
     void
-    ExplicitDynamics::add_history(Statistics &row,
-                                  const StepReport &,
+    ExplicitDynamics::add_history(Statistics       &row,
+                                  const StepReport &report,
                                   const BorderedVector &,
                                   Run &run)
     {
@@ -315,6 +319,16 @@ namespace pneuma
       row.add(g, "stable_time_step", "s", motion.stable_step, use);
       if (settings.mass_scaling_step > 0.)
         row.add(g, "added_mass_fraction", "", motion.added_mass, use);
+      if (settings.damping_ratio > 0.)
+        row.add(g, "damping_frequency", "Hz", damping_frequency, use);
+      // A static stage's state has no inertia.
+      const auto [inertial, damping] =
+        report.convergence_test == "explicit"
+          ? resultant_forces(run.model)
+          : std::pair<std::array<double, 3>, std::array<double, 3>>();
+      row.add_vector(g, "inertial_force", "N", inertial, use);
+      if (settings.damping_ratio > 0.)
+        row.add_vector(g, "damping_force", "N", damping, use);
       // With chambers: the largest relative error of the border
       // constraints (prescribed volumes) at the steps since the last row.
       if (run.model.n_border() > 0)
@@ -334,6 +348,8 @@ namespace pneuma
       row.add(g, "explicit_smallest_step", "s", smallest_step, counts);
       if (settings.mass_scaling_step > 0.)
         row.add(g, "largest_added_mass_fraction", "", largest_added, counts);
+      if (settings.damping_ratio > 0.)
+        row.add(g, "damping_frequency", "Hz", damping_frequency, counts);
       row.add(g, "kinetic_energy", "J", motion.kinetic, counts);
       row.add(g, "energy_balance_error", "", motion.balance_error(), counts);
     }
@@ -344,6 +360,8 @@ namespace pneuma
       std::vector<const BorderedVector *> &vectors) const
     {
       checkpoint.put("explicit/motion", motion);
+      checkpoint.put("explicit/damping",
+                     std::make_pair(alpha, damping_frequency));
       vectors.push_back(&motion.velocity);
       vectors.push_back(&motion.increment);
       checkpoint_mass.field = inverse_mass;
@@ -355,6 +373,8 @@ namespace pneuma
                                       std::vector<BorderedVector> &vectors)
     {
       motion = checkpoint.get<Motion>("explicit/motion");
+      std::tie(alpha, damping_frequency) =
+        checkpoint.get<std::pair<double, double>>("explicit/damping");
       AssertThrow(vectors.size() >= 3, ExcInternalError());
       motion.velocity  = std::move(vectors[0]);
       motion.increment = std::move(vectors[1]);

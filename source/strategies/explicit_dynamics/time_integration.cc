@@ -16,6 +16,8 @@
 #include <pneuma/strategies/run.h>
 #include <pneuma/strategies/stages.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -100,46 +102,80 @@ namespace pneuma
 
     namespace
     {
-      /// v^T M v with the inverse mass (zero entries: no mass).
-      double
-      mass_norm(const LA::Vector &v, const LA::Vector &inverse_mass)
+      /**
+       * The step's global sums in one reduction: v^T M v (the damping's
+       * power), v_{n+1}^T M v_{n+1} with v_{n+1} = v_{n+1/2} - dt/2 M^-1
+       * r_{n+1} (twice the kinetic energy at the step, where W is; the
+       * damping's half step left out), |r_{n+1}|^2 (to see that the
+       * motion is finite) and the trapezoidal work of the step,
+       * (u_{n+1} - u_n)^T (r_n + r_{n+1})/2, from the increment @p dx and
+       * @p r_old = r_n. Unknowns without a mass (zero inverse mass) count
+       * in |r|^2 and the work only. One reduction per step instead of
+       * five (they are a step's collectives besides the assembly's).
+       */
+      std::array<double, 4>
+      step_sums(const LA::Vector &v,
+                const LA::Vector &dx,
+                const LA::Vector &r_old,
+                const LA::Vector &r,
+                const LA::Vector &inverse_mass,
+                const double      dt)
       {
-        double sum = 0.;
-        auto   mi  = inverse_mass.begin();
-        for (const double vi : v)
+        std::array<double, 4> local{{0., 0., 0., 0.}}, sums;
+        const auto            n  = v.locally_owned_size();
+        const double         *mi = inverse_mass.begin(), *ri = r.begin(),
+                     *ro = r_old.begin(), *vi = v.begin(), *di = dx.begin();
+        for (std::size_t i = 0; i < n; ++i)
           {
-            if (*mi > 0.)
-              sum += vi * vi / *mi;
-            ++mi;
-          }
-        return Utilities::MPI::sum(sum, v.get_mpi_communicator());
-      }
-
-      /// v_{n+1}^T M v_{n+1} with v_{n+1} = v_{n+1/2} - dt/2 M^-1 r_{n+1}:
-      /// the kinetic energy at the step, where W is (the damping's half
-      /// step left out).
-      double
-      full_step_norm(const LA::Vector &v,
-                     const LA::Vector &r,
-                     const LA::Vector &inverse_mass,
-                     const double      dt)
-      {
-        double sum = 0.;
-        auto   mi  = inverse_mass.begin();
-        auto   ri  = r.begin();
-        for (const double vi : v)
-          {
-            if (*mi > 0.)
+            if (mi[i] > 0.)
               {
-                const double v_full = vi - 0.5 * dt * *mi * *ri;
-                sum += v_full * v_full / *mi;
+                const double v_full = vi[i] - 0.5 * dt * mi[i] * ri[i];
+                local[0] += vi[i] * vi[i] / mi[i];
+                local[1] += v_full * v_full / mi[i];
               }
-            ++mi;
-            ++ri;
+            local[2] += ri[i] * ri[i];
+            local[3] += di[i] * (ro[i] + ri[i]);
           }
-        return Utilities::MPI::sum(sum, v.get_mpi_communicator());
+        Utilities::MPI::sum(ArrayView<const double>(local.data(), 4),
+                            v.get_mpi_communicator(),
+                            ArrayView<double>(sums.data(), 4));
+        sums[3] *= 0.5;
+        return sums;
       }
     } // namespace
+
+    std::pair<std::array<double, 3>, std::array<double, 3>>
+    ExplicitDynamics::resultant_forces(const Model &model) const
+    {
+      // M a_n = -r_n - alpha M v_n on every unknown with a mass (the mass
+      // in use), v_n = v_{n-1/2} - dt/2 M^-1 r_n as for the kinetic
+      // energy: the inertial force -M a_n and the damping force
+      // -alpha M v_n, summed along each axis.
+      std::array<double, 3> inertial{}, damping{};
+      const LA::Vector     &v  = motion.velocity.field;
+      const LA::Vector     &r  = residual.field;
+      const double          dt = motion.previous_step;
+      for (unsigned int c = 0; c < 3; ++c)
+        {
+          const LA::Vector axis = model.rigid_translation(c);
+          for (const auto i : axis.locally_owned_elements())
+            if (axis[i] != 0. && inverse_mass[i] > 0.)
+              {
+                const double v_full = v[i] - 0.5 * dt * inverse_mass[i] * r[i];
+                const double f_damp = -alpha * v_full / inverse_mass[i];
+                inertial[c] += axis[i] * (r[i] - f_damp);
+                damping[c] += axis[i] * f_damp;
+              }
+        }
+      const MPI_Comm        comm = model.mpi_communicator();
+      std::array<double, 6> local, sums;
+      std::copy(inertial.begin(), inertial.end(), local.begin());
+      std::copy(damping.begin(), damping.end(), local.begin() + 3);
+      Utilities::MPI::sum(ArrayView<const double>(local.data(), 6),
+                          comm,
+                          ArrayView<double>(sums.data(), 6));
+      return {{{sums[0], sums[1], sums[2]}}, {{sums[3], sums[4], sums[5]}}};
+    }
 
     void
     ExplicitDynamics::print_progress(Run         &run,
@@ -239,12 +275,15 @@ namespace pneuma
               if (!projection.rows.empty())
                 hold_constraints(model, r.field, dt);
             }
-          motion.damping += alpha * dt_mid * mass_norm(v, inverse_mass);
           model.assemble_residual(x, t, r_next);
-          motion.work += 0.5 * (dx * r.field + dx * r_next.field);
+          const auto sums =
+            step_sums(v, dx, r.field, r_next.field, inverse_mass, dt);
           std::swap(r, r_next);
-          motion.kinetic = 0.5 * full_step_norm(v, r.field, inverse_mass, dt);
-          if (!std::isfinite(r.l2_norm()) || !std::isfinite(motion.kinetic))
+          motion.work += sums[3];
+          motion.damping += alpha * dt_mid * sums[0];
+          motion.kinetic = 0.5 * sums[1];
+          if (!std::isfinite(sums[2]) || !std::isfinite(r.border.l2_norm())
+              || !std::isfinite(motion.kinetic))
             return "the motion is not finite at t = " + as_text(t)
                    + " (an unstable step, or a load that is not finite)";
           model.commit_step(t, x);

@@ -11,15 +11,15 @@
  * with the lumped (row-sum, diagonal) mass of every subsystem with
  * Inertia and mass-proportional damping \f$\alpha = 2 \zeta \omega\f$ (the
  * damping ratio \f$\zeta\f$ at the angular frequency \f$\omega = 2\pi
- * f\f$ the user names). With \f$\Delta t_n = (\Delta t_{n-1/2} +
- * \Delta t_{n+1/2})/2\f$:
- * \f[ v_{n+1/2} = \frac{(1 - \alpha\Delta t_n/2)\, v_{n-1/2} - \Delta t_n
- *     M^{-1} r(u_n, t_n)}{1 + \alpha \Delta t_n / 2}, \qquad
- *     u_{n+1} = u_n + \Delta t_{n+1/2}\, v_{n+1/2}. \f]
- * Prescribed values (supports, rigid plates, cable ends) follow t
- * (Model::begin_step() at every step), dependent dofs their masters;
- * the chamber pressures and levels follow the field at every step
- * (Model::border_for(): a gas by its exact law from the current volume).
+ * f\f$ the user names, or else the lowest natural frequency of the
+ * state each stage starts from: damping.cc). With \f$\Delta t_n = (\Delta
+ * t_{n-1/2} + \Delta t_{n+1/2})/2\f$: \f[ v_{n+1/2} = \frac{(1 - \alpha\Delta
+ * t_n/2)\, v_{n-1/2} - \Delta t_n M^{-1} r(u_n, t_n)}{1 + \alpha \Delta t_n /
+ * 2}, \qquad u_{n+1} = u_n + \Delta t_{n+1/2}\, v_{n+1/2}. \f] Prescribed
+ * values (supports, rigid plates, cable ends) follow t (Model::begin_step() at
+ * every step), dependent dofs their masters; the chamber pressures and levels
+ * follow the field at every step (Model::border_for(): a gas by its exact law
+ * from the current volume).
  *
  * The stable step of central differences is \f$\Delta t \le 2 /
  * \omega_{max}\f$; \f$\omega_{max}^2 = \lambda_{max}(M^{-1}K)\f$ is bounded
@@ -40,7 +40,9 @@
 
 #include <deal.II/base/types.h>
 
+#include <array>
 #include <cmath>
+#include <utility>
 
 #include <pneuma/core/linear_algebra.h>
 #include <pneuma/strategies/border_projection.h>
@@ -158,6 +160,13 @@ namespace pneuma
       /// velocity, the increment, the residual @p r of u_n and the work.
       void
       hold_constraints(const Model &model, LA::Vector &r, const double dt);
+      /// The damping (alpha) at the lowest natural frequency of @p x at
+      /// @p t (a modal analysis, printed); InputError naming the Damping
+      /// frequency where there is none.
+      void
+      damp_lowest_mode(Run                           &run,
+                       const solvers::BorderedVector &x,
+                       const double                   t);
       /// inverse_mass from the diagonal mass @p m (zero where m is).
       void
       set_inverse_mass(const LA::Vector &m);
@@ -166,6 +175,12 @@ namespace pneuma
       /// directions) that reaches it.
       void
       scale_mass(const Model &model, const LA::Vector &g);
+      /// The resultants of the inertial forces -M a and of the damping
+      /// forces -alpha M v at the reported state along x, y, z: with the
+      /// supports' reactions and the applied loads they sum to zero (the
+      /// internal forces do).
+      std::pair<std::array<double, 3>, std::array<double, 3>>
+      resultant_forces(const Model &model) const;
       /// The progress row at @p t with the step @p dt.
       void
       print_progress(Run &run, const double t, const double dt) const;
@@ -186,8 +201,10 @@ namespace pneuma
 
       Settings settings;
       double   alpha = 0.; ///< mass damping [1/s]
-      bool     used = false, resumed = false;
-      Motion   motion;
+      /// The frequency alpha holds the Damping ratio at [Hz].
+      double damping_frequency = 0.;
+      bool   used = false, resumed = false;
+      Motion motion;
       /// The physical lumped mass (zero on constrained dofs) and the
       /// inverse of the one in use (scaled, if mass scaling is on).
       LA::Vector mass, inverse_mass;
