@@ -10,7 +10,9 @@
 //   wrinkled stretch with lateral compression, slack biaxial compression);
 // - the stress-free reference: S = 0, W = 0, thickness stretch 1 at C = I;
 // - a positive initial shear modulus, a positive thickness stretch, and
-//   a symmetric positive tangent at the reference.
+//   a symmetric positive tangent at the reference;
+// - the stress alone (ConstitutiveLaw::stress, an explicit step's) is
+//   bit for bit the stress evaluated with the tangent.
 // Each check prints the largest relative error and its tolerance.
 
 #include <deal.II/base/parameter_handler.h>
@@ -195,6 +197,15 @@ main()
               ok =
                 check(form + ": tangent vs differences", tangent, 2e-6) && ok;
               ok = check(form + ": stress vs energy differences", stress, 2e-6)
+                   && ok;
+              // The stress alone (an explicit step's) is the same number.
+              SymmetricTensor<2, 2> S, S_alone;
+              SymmetricTensor<4, 2> D;
+              l->evaluate(c.C, S, D);
+              l->stress(c.C, S_alone);
+              ok = check(form + ": stress alone = with tangent",
+                         (S_alone - S).norm(),
+                         0.)
                    && ok;
             }
         }

@@ -427,8 +427,10 @@ namespace pneuma
             C[0][0] = s.a0 * s.a0;
             C[0][1] = s.a0 * s.a1;
             C[1][1] = s.a1 * s.a1;
-            if (ctx.want_stress)
+            if (ctx.want_matrix)
               material.law->evaluate(C, s.S, s.D);
+            else if (ctx.want_stress)
+              material.law->stress(C, s.S);
             s.dA  = P.JxW;
             s.HdA = H * s.dA;
             const Point<3> X(P.X[0], P.X[1], P.X[2]);

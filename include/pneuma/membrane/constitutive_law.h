@@ -60,6 +60,15 @@ namespace pneuma
                SymmetricTensor<2, 2>       &S,
                SymmetricTensor<4, 2>       &dS_dE) const = 0;
 
+      /// The stress S alone at @p C (an assembly without a matrix); the
+      /// default evaluates the tangent too.
+      virtual void
+      stress(const SymmetricTensor<2, 2> &C, SymmetricTensor<2, 2> &S) const
+      {
+        SymmetricTensor<4, 2> D;
+        evaluate(C, S, D);
+      }
+
       /// Strain energy per unit reference volume.
       virtual double
       strain_energy(const SymmetricTensor<2, 2> &C) const = 0;

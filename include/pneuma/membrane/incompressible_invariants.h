@@ -19,10 +19,13 @@ namespace pneuma
 {
   namespace membrane
   {
-    /// I1, I2 of the incompressible plane-stress state and derivatives.
+    /// I1, I2 of the incompressible plane-stress state and derivatives
+    /// (the second ones only @p with_second: a stress without its tangent,
+    /// as an explicit step needs, costs a third).
     struct IncompressibleInvariants
     {
-      explicit IncompressibleInvariants(const dealii::SymmetricTensor<2, 2> &C)
+      explicit IncompressibleInvariants(const dealii::SymmetricTensor<2, 2> &C,
+                                        const bool with_second = true)
       {
         using namespace dealii;
         const SymmetricTensor<2, 2> I    = unit_symmetric_tensor<2>();
@@ -32,6 +35,10 @@ namespace pneuma
         l3sq                             = 1. / detC;
         I1                               = trC + l3sq;
         I2                               = detC + l3sq * trC;
+        dI1                              = I - l3sq * Ci;
+        dI2 = detC * Ci + l3sq * I - trC * l3sq * Ci;
+        if (!with_second)
+          return;
 
         // (Ci (.) Ci)_{ijkl} = (Ci_ik Ci_jl + Ci_il Ci_jk)/2 = -dCi/dC.
         SymmetricTensor<4, 2> CioCi;
@@ -43,8 +50,6 @@ namespace pneuma
                   0.5 * (Ci[i][k] * Ci[j][l] + Ci[i][l] * Ci[j][k]);
         const SymmetricTensor<4, 2> CixCi = outer_product(Ci, Ci);
 
-        dI1  = I - l3sq * Ci;
-        dI2  = detC * Ci + l3sq * I - trC * l3sq * Ci;
         ddI1 = l3sq * (CixCi + CioCi);
         ddI2 = detC * (CixCi - CioCi)
                - l3sq * (outer_product(I, Ci) + outer_product(Ci, I))
@@ -53,6 +58,7 @@ namespace pneuma
 
       double                        l3sq, I1, I2;
       dealii::SymmetricTensor<2, 2> dI1, dI2;
+      /// Zero without the second derivatives.
       dealii::SymmetricTensor<4, 2> ddI1, ddI2;
     };
   } // namespace membrane

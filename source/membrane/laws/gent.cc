@@ -76,6 +76,17 @@ namespace pneuma
           D = 4. * (W1 * inv.ddI1 + W11 * outer_product(inv.dI1, inv.dI1));
         }
 
+        void
+        stress(const SymmetricTensor<2, 2> &C,
+               SymmetricTensor<2, 2>       &S) const override
+        {
+          const IncompressibleInvariants inv(C, false);
+          const double                   gap = Jm - (inv.I1 - 3.);
+          const double                   f =
+            gap > 0. ? Jm / gap : std::numeric_limits<double>::infinity();
+          S = mu * f * inv.dI1;
+        }
+
         double
         strain_energy(const SymmetricTensor<2, 2> &C) const override
         {

@@ -50,6 +50,14 @@ namespace pneuma
           D = 4. * (c10 * inv.ddI1 + c01 * inv.ddI2);
         }
 
+        void
+        stress(const SymmetricTensor<2, 2> &C,
+               SymmetricTensor<2, 2>       &S) const override
+        {
+          const IncompressibleInvariants inv(C, false);
+          S = 2. * (c10 * inv.dI1 + c01 * inv.dI2);
+        }
+
         double
         strain_energy(const SymmetricTensor<2, 2> &C) const override
         {

@@ -49,6 +49,13 @@ namespace pneuma
           D = 2. * mu * inv.ddI1;
         }
 
+        void
+        stress(const SymmetricTensor<2, 2> &C,
+               SymmetricTensor<2, 2>       &S) const override
+        {
+          S = mu * IncompressibleInvariants(C, false).dI1;
+        }
+
         double
         strain_energy(const SymmetricTensor<2, 2> &C) const override
         {
