@@ -771,14 +771,26 @@ namespace pneuma
     ChamberAssembler::Pass::finish()
     {
       const MPI_Comm comm = assembler.dof_handler->get_communicator();
+      // The five measures of every chamber in one reduction.
+      const auto fields = [](ChamberMeasures &m) {
+        return std::array<double *, 5>{{&m.volume,
+                                        &m.wall_area,
+                                        &m.liquid_volume,
+                                        &m.free_surface_area,
+                                        &m.wetted_area}};
+      };
+      std::vector<double> local, sums(5 * measures.size());
+      for (auto &m : measures)
+        for (const double *f : fields(m))
+          local.push_back(*f);
+      Utilities::MPI::sum(ArrayView<const double>(local),
+                          comm,
+                          ArrayView<double>(sums));
       for (unsigned int c = 0; c < measures.size(); ++c)
         {
-          auto &m             = measures[c];
-          m.volume            = Utilities::MPI::sum(m.volume, comm);
-          m.wall_area         = Utilities::MPI::sum(m.wall_area, comm);
-          m.liquid_volume     = Utilities::MPI::sum(m.liquid_volume, comm);
-          m.free_surface_area = Utilities::MPI::sum(m.free_surface_area, comm);
-          m.wetted_area       = Utilities::MPI::sum(m.wetted_area, comm);
+          auto &m = measures[c];
+          for (unsigned int k = 0; k < 5; ++k)
+            *fields(m)[k] = sums[5 * c + k];
           if (with_vectors)
             {
               m.q.compress(VectorOperation::add);
@@ -806,6 +818,11 @@ namespace pneuma
       Vector<double>     cell_residual(n_dofs);
       std::vector<types::global_dof_index> dof_indices(n_dofs);
       std::vector<double>                  local_u(n_dofs);
+      // u by local index where every owned cell's dofs are in its range
+      // (the reference data hold the cells' dofs).
+      const auto   &ref = reference();
+      const double *values =
+        ghosted_indices.values(u, ref.dof_indices(0), ref.n_cells(), n_dofs);
       // The index of each owned cell in the reference data.
       unsigned int cell_index = 0;
       for (const auto &cell : dof_handler->active_cell_iterators())
@@ -815,9 +832,11 @@ namespace pneuma
           const unsigned int index = cell_index++;
           if (walls_of(cell->material_id()).empty())
             continue;
-          cell->get_dof_indices(dof_indices);
+          const types::global_dof_index *cell_dofs = ref.dof_indices(index);
+          std::copy(cell_dofs, cell_dofs + n_dofs, dof_indices.begin());
+          const int *local = values ? ghosted_indices.cell(index) : nullptr;
           for (unsigned int i = 0; i < n_dofs; ++i)
-            local_u[i] = u[dof_indices[i]];
+            local_u[i] = local ? values[local[i]] : u[dof_indices[i]];
           cell_matrix   = 0;
           cell_residual = 0;
           pass.cell(cell,

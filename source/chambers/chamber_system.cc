@@ -535,18 +535,18 @@ namespace pneuma
           double      V, V_l, A_fs, w;
           group_measures(g, m, V, V_l, A_fs, w);
           // Group vectors q and q_l.
-          LA::Vector q;
+          // Copies of the leader's vectors (an assignment to an empty
+          // vector would plan a transfer between their maps, collectively).
+          LA::Vector q = g.gas ? m[g.leader].q : LA::Vector();
           if (g.gas)
             {
-              q = m[g.leader].q;
               for (unsigned int k = 1; k < g.members.size(); ++k)
                 q += m[g.members[k]].q;
             }
           const bool with_liquid = g.liquid && !g.empty;
-          LA::Vector q_l;
+          LA::Vector q_l = with_liquid ? m[g.leader].q_liquid : LA::Vector();
           if (with_liquid)
             {
-              q_l = m[g.leader].q_liquid;
               for (unsigned int k = 1; k < g.members.size(); ++k)
                 q_l += m[g.members[k]].q_liquid;
             }

@@ -1,3 +1,5 @@
+#include <deal.II/lac/exceptions.h>
+
 #include <pneuma/core/local_access.h>
 
 #include <Epetra_FEVector.h>
@@ -64,6 +66,18 @@ namespace pneuma
             }
         }
       return complete ? e[0] : nullptr;
+    }
+
+    void
+    GhostImport::operator()(const Vector &owned, Vector &ghosted)
+    {
+      const Epetra_BlockMap &source = owned.trilinos_vector().Map();
+      Epetra_FEVector       &target = ghosted.trilinos_vector();
+      if (!import || !import->SourceMap().SameBlockMapDataAs(source)
+          || !import->TargetMap().SameBlockMapDataAs(target.Map()))
+        import = std::make_unique<Epetra_Import>(target.Map(), source);
+      const int error = target.Import(owned.trilinos_vector(), *import, Insert);
+      AssertThrow(error == 0, dealii::LACExceptions::ExcTrilinosError(error));
     }
   } // namespace LA
 } // namespace pneuma

@@ -148,6 +148,7 @@ namespace pneuma
 
     make_constraints();
     external.reinit(owned, comm);
+    field_template.reinit(owned, comm);
     ghosted.reinit(owned, relevant, comm);
     coupling.reinit(n_border, external);
     scratch_coupling.reinit(n_border, external);
@@ -267,13 +268,15 @@ namespace pneuma
   LA::Vector
   Model::make_field() const
   {
-    return LA::Vector(owned, comm);
+    // A copy shares the template's map: vectors of one map copy and
+    // import into each other without collective checks of their layouts.
+    return field_template;
   }
 
   const LA::Vector &
   Model::ghost(const LA::Vector &field)
   {
-    ghosted = field;
+    ghost_import(field, ghosted);
     return ghosted;
   }
 

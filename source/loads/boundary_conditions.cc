@@ -8,6 +8,8 @@
 #include <pneuma/loads/boundary_conditions.h>
 #include <pneuma/loads/loads.h>
 
+#include <Epetra_FEVector.h>
+
 namespace pneuma
 {
   namespace loads
@@ -343,14 +345,24 @@ namespace pneuma
             if (solution.locally_owned_elements().is_element(v.first))
               held.owned.push_back(v.first);
         }
+      // Every value is written in place on the rank that owns it: no
+      // exchange (a compress plans one collectively at every call, and an
+      // explicit step sets the prescribed values at every step).
+      Epetra_FEVector &v     = solution.trilinos_vector();
+      const auto       write = [&v](const types::global_dof_index i,
+                              const double                  value) {
+        const int local =
+          v.Map().LID(static_cast<TrilinosWrappers::types::int_type>(i));
+        AssertThrow(local >= 0, ExcInternalError());
+        v[0][local] = value;
+      };
       if (static_supports)
         for (const auto i : held.owned)
-          solution[i] = 0.;
+          write(i, 0.);
       else
-        for (const auto &v : prescribed_dofs(mapping, dof_handler, t))
-          if (solution.locally_owned_elements().is_element(v.first))
-            solution[v.first] = v.second;
-      solution.compress(VectorOperation::insert);
+        for (const auto &p : prescribed_dofs(mapping, dof_handler, t))
+          if (solution.locally_owned_elements().is_element(p.first))
+            write(p.first, p.second);
     }
   } // namespace loads
 } // namespace pneuma

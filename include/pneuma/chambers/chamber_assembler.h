@@ -304,6 +304,9 @@ namespace pneuma
         std::vector<std::array<double, 5>>   measures;
       };
       mutable MeasureCache measure_cache;
+      /// The local index of every wall dof in the ghosted field (a pass
+      /// of its own reads u by it, as the membrane kernel does).
+      mutable LA::GhostedIndices ghosted_indices;
 
       /**
        * The heights of the walls of liquid chambers at one state, per

@@ -26,6 +26,7 @@
 #include <pneuma/core/linear_algebra.h>
 
 #include <Epetra_BlockMap.h>
+#include <Epetra_Import.h>
 
 #include <memory>
 #include <vector>
@@ -68,6 +69,26 @@ namespace pneuma
       double                         *values = nullptr;
       dealii::types::global_dof_index first  = 0;
       dealii::types::global_dof_index n      = 0;
+    };
+
+    /**
+     * ghosted = owned (the owned values and the ghosts) by one Epetra
+     * import whose plan is built once per pair of layouts. deal.II's
+     * operator= from an owned into a ghosted vector of another map builds
+     * a new plan at every call (a dozen collective operations, most of an
+     * explicit step's on 2 ranks); the plan is kept while the two vectors
+     * have the maps it was built for (the same Epetra map data, a test on
+     * this rank alone: every rank makes its vectors the same way).
+     */
+    class GhostImport
+    {
+    public:
+      /// @p ghosted (with ghosts) takes the values of @p owned.
+      void
+      operator()(const Vector &owned, Vector &ghosted);
+
+    private:
+      std::unique_ptr<Epetra_Import> import;
     };
 
     /**

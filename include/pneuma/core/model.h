@@ -22,6 +22,7 @@
 #include <pneuma/core/capabilities.h>
 #include <pneuma/core/constraint_distribution.h>
 #include <pneuma/core/linear_algebra.h>
+#include <pneuma/core/local_access.h>
 #include <pneuma/core/subsystem.h>
 #include <pneuma/loads/loads.h>
 #include <pneuma/solvers/border.h>
@@ -572,6 +573,10 @@ namespace pneuma
     /// ensure_laplacian() assembles it, cleared after a solve used it.
     LA::SparseMatrix tangent, laplacian;
     LA::Vector       external, ghosted;
+    /// The zero field every make_field() copies (one map for all fields).
+    LA::Vector field_template;
+    /// The plan of ghost().
+    LA::GhostImport ghost_import;
     /// support_residual() of the last add_statistics().
     LA::Vector support_forces;
     /// unconstrained_residual() of the last add_statistics().
