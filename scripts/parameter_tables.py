@@ -13,7 +13,7 @@ subsection, every variant) and replaces, in DOC.md, each block
 by a table of every entry of the top-level subsection "Section": entry path
 (below the section), default, allowed values, documentation. Template
 instances are shown as "Region <id>", "Cable <k>", "Chamber <k>",
-"Pair <k>", "Tie <k>". --check exits 1 (naming the sections) if DOC.md is not up to
+"Pair <k>", "Tie <k>", "Obstacle <k>". --check exits 1 (naming the sections) if DOC.md is not up to
 date, so a test keeps the manual in step with the code.
 """
 import json
@@ -23,7 +23,7 @@ import sys
 
 TEMPLATES = {r"^Region 0$": "Region <id>", r"^Cable 1$": "Cable <k>",
              r"^Chamber 1$": "Chamber <k>", r"^Pair 1$": "Pair <k>",
-             r"^Tie 1$": "Tie <k>"}
+             r"^Tie 1$": "Tie <k>", r"^Obstacle 1$": "Obstacle <k>"}
 
 
 def template_name(name):

@@ -225,6 +225,18 @@ only_summary input-error-2
 check "$dir"                        1 "is a directory, not a parameter file"
 check "$k"                          1 "Contact/Pair 1/Membrane regions: the mesh has no cells in region 5" --set "Geometry/Type=disc" --set "Contact/Number of pairs=1" --set "Contact/Pair 1/Membrane regions=0, 5"
 check "$k"                          1 "Contact/Pair 1/Smoothed normal from: needs Master normal = smoothed" --set "Geometry/Type=disc" --set "Contact/Number of pairs=1" --set "Contact/Pair 1/Smoothed normal from=1"
+# Rigid obstacles: regions, directions, penalties and a start inside one.
+o=(--set "Obstacles/Number of obstacles=1" --set "Obstacles/Obstacle 1/plane/Point=0, 0, -0.01")
+check "$dir/valid.prm"              1 "Obstacles/Obstacle 1/Regions: the mesh has no cells in region 5" "${o[@]}" --set "Obstacles/Obstacle 1/Regions=0, 5"
+check "$dir/valid.prm"              1 "Obstacles/Obstacle 1/plane/Normal: '0, 0, 0' is not a direction" "${o[@]}" --set "Obstacles/Obstacle 1/plane/Normal=0, 0, 0"
+check "$dir/valid.prm"              1 "Penalty" "${o[@]}" --set "Obstacles/Obstacle 1/Penalty=-1"
+check "$dir/valid.prm"              1 "Obstacles/Obstacle 1/Penalty factor: must be positive and finite when Penalty is 0" "${o[@]}" --set "Obstacles/Obstacle 1/Penalty factor=0"
+check "$dir/valid.prm"              1 "Obstacles/Obstacle 1/sphere/Radius: must be positive and finite" "${o[@]}" --set "Obstacles/Obstacle 1/Shape=sphere" --set "Obstacles/Obstacle 1/sphere/Radius=0"
+check "$dir/valid.prm"              1 "Shape" "${o[@]}" --set "Obstacles/Obstacle 1/Shape=cube"
+check "$dir/valid.prm"              1 "Obstacle 2" "${o[@]}" --set "Obstacles/Obstacle 2/Penalty=1"
+check "$dir/valid.prm"              1 "Obstacles/Obstacle 1: the membrane starts inside the obstacle" --set "Obstacles/Number of obstacles=1"
+check_mpi "$dir/valid.prm"          1 "Obstacles/Obstacle 1: the membrane starts inside the obstacle" --set "Obstacles/Number of obstacles=1"
+check "$dir/valid.prm"              0 "" "${o[@]}"
 # Ill-posed scenes: free rigid-body motions, named before any work.
 check "$dir/valid.prm"              1 "Boundary conditions: the membrane is free to move as a rigid body (translation along x; translation along y; translation along z; rotation about x" --set "Boundary conditions/Fixed boundaries="
 check "$w"                          1 "the membrane is free to move as a rigid body (translation along y" --set "Geometry/gmsh/Mesh file=$dir/../../meshes/waterbeam.msh" --set "Boundary conditions/Fixed points=0,0,0: xyz"

@@ -173,8 +173,9 @@ namespace pneuma
     void
     ChamberSubsystem::add_loads(const LA::Vector                &u,
                                 const AffineConstraints<double> &constraints,
-                                LA::Vector                      &residual,
-                                LA::Vector                      &external) const
+                                const double,
+                                LA::Vector &residual,
+                                LA::Vector &external) const
     {
       // Chamber loads: -f into the residual, +f into the applied loads.
       LA::Vector chamber_part(residual);
@@ -280,7 +281,7 @@ namespace pneuma
     }
 
     void
-    ChamberSubsystem::add_output_fields(const LA::Vector &field)
+    ChamberSubsystem::add_output_fields(const LA::Vector &field, const double)
     {
       output_cells = assembler.cell_data(field, system.converged_loads());
       auto &out    = membrane.data_out();

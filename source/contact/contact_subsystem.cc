@@ -205,7 +205,7 @@ namespace pneuma
     }
 
     void
-    ContactSubsystem::add_output_fields(const LA::Vector &)
+    ContactSubsystem::add_output_fields(const LA::Vector &, const double)
     {
       for (const auto &pair : parameters.all())
         cables->system().set_output_field(pair.cable,

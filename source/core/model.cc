@@ -610,7 +610,7 @@ namespace pneuma
     ghost(state.field);
     for (const auto &s : subsystems)
       if (auto *o = dynamic_cast<OutputFiles *>(s.get()))
-        o->add_output_fields(ghosted);
+        o->add_output_fields(ghosted, t);
     if (!mode_fields.empty())
       for (const auto &s : subsystems)
         if (auto *o = dynamic_cast<OutputFiles *>(s.get()))

@@ -89,7 +89,7 @@ namespace pneuma
     // Output
     // ------------------------------------------------------------------
     void
-    MembraneSubsystem::add_output_fields(const LA::Vector &field)
+    MembraneSubsystem::add_output_fields(const LA::Vector &field, const double)
     {
       output = std::make_unique<DataOut<2, 3>>();
       output->attach_dof_handler(dofs);

@@ -202,7 +202,7 @@ namespace pneuma
       request.external = &ext;
       assembler->assemble(u, model.kinematic_constraints(), request);
       for (const auto *terms : cell_terms)
-        terms->add_loads(u, model.kinematic_constraints(), scratch, ext);
+        terms->add_loads(u, model.kinematic_constraints(), t, scratch, ext);
       const LA::Vector &residual = model.support_residual();
       reaction.fill(0.);
       applied.fill(0.);

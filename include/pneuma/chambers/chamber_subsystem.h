@@ -107,7 +107,7 @@ namespace pneuma
                      const LA::Vector &field,
                      const double      t) const override;
       void
-      add_output_fields(const LA::Vector &field) override;
+      add_output_fields(const LA::Vector &field, const double t) override;
 
       // ---- membrane::CellTerms: the filling loads on the walls
       void
@@ -133,6 +133,7 @@ namespace pneuma
       void
       add_loads(const LA::Vector                &u,
                 const AffineConstraints<double> &constraints,
+                const double                     t,
                 LA::Vector                      &residual,
                 LA::Vector                      &external) const override;
 

@@ -83,7 +83,7 @@ namespace pneuma
                      const LA::Vector &field,
                      const double      t) const override;
       void
-      add_output_fields(const LA::Vector &field) override;
+      add_output_fields(const LA::Vector &field, const double t) override;
       /// False while any pair uses the smoothed master normal, or while a point
       /// of a pair with friction slips (in the last assembly).
       bool

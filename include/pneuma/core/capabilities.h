@@ -256,12 +256,14 @@ namespace pneuma
   {
   public:
     virtual ~OutputFiles() = default;
-    /// Phase 1: add fields of the state (ghosted @p field) to the outputs
-    /// of this or other subsystems (contact pressure on the membrane's).
+    /// Phase 1: add fields of the state (ghosted @p field) at pseudo time
+    /// @p t to the outputs of this or other subsystems (contact pressure
+    /// on the membrane's).
     virtual void
-    add_output_fields(const LA::Vector &field)
+    add_output_fields(const LA::Vector &field, const double t)
     {
       (void)field;
+      (void)t;
     }
     /// Between phases 1 and 2: add the mode shapes @p modes (ghosted,
     /// alive until phase 2) of an eigen analysis as fields @p names.

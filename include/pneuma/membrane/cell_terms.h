@@ -84,11 +84,13 @@ namespace pneuma
       /// After the cell loop.
       virtual void
       end() = 0;
-      /// For the reactions at the converged state @p u (ghosted): add the
-      /// loads to @p residual (as -f) and to @p external (as +f).
+      /// For the reactions at the converged state @p u (ghosted) at pseudo
+      /// time @p t: add the loads to @p residual (as -f) and to
+      /// @p external (as +f).
       virtual void
       add_loads(const LA::Vector                &u,
                 const AffineConstraints<double> &constraints,
+                const double                     t,
                 LA::Vector                      &residual,
                 LA::Vector                      &external) const = 0;
     };

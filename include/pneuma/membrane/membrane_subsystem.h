@@ -136,7 +136,7 @@ namespace pneuma
                      const LA::Vector &field,
                      const double      t) const override;
       void
-      add_output_fields(const LA::Vector &field) override;
+      add_output_fields(const LA::Vector &field, const double t) override;
       void
       add_mode_fields(const std::vector<std::string> &names,
                       const std::vector<LA::Vector>  &modes) override;
@@ -201,6 +201,12 @@ namespace pneuma
       monitor_dof(const unsigned int m, const unsigned int c) const override
       {
         return monitor_dofs[m][c];
+      }
+      /// The regions' materials (laws, thicknesses).
+      const MaterialRegions &
+      material_regions() const
+      {
+        return materials;
       }
       /// The material ids of the mesh (every rank).
       const std::set<types::material_id> &

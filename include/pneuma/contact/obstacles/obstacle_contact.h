@@ -1,0 +1,127 @@
+#pragma once
+
+/**
+ * @file
+ * The penalty contact of the membrane with rigid obstacles at the
+ * membrane's quadrature points (doc/theory.md "Rigid obstacles").
+ *
+ * At a point of the mid-surface x = X + u, the gap to obstacle k, moved
+ * by its rigid translation d_k(t), is
+ * \f$g = \varphi_k(x - d_k) - t/2\f$ (the half thickness t/2 of the
+ * point's region as the offset). The penalty energy
+ * \f$\Pi = \int_{\Omega_0} \tfrac12 \epsilon \langle -g\rangle^2\,dA\f$
+ * (over the reference surface, \f$\epsilon\f$ [Pa/m]) gives the residual
+ * \f$r_{ai} = \int \epsilon\, g\, n_i N_a\,dA\f$ where g < 0 and the
+ * symmetric tangent
+ * \f$K_{ai,bj} = \int \epsilon N_a N_b (n_i n_j + g\,\varphi_{,ij})\,dA\f$.
+ * The nominal contact pressure is \f$p = \epsilon\langle -g\rangle\f$ per
+ * reference area, the true one p/J with J = |a_1 x a_2| the area stretch.
+ *
+ * The default penalty of a cell is \f$\epsilon = f\,E t/h^2\f$: E t = 3 mu t
+ * of its region (mu the law's initial shear modulus), h its node spacing
+ * (sqrt of its area over the degree). The gap it leaves under a pressure
+ * p is p h^2/(f E t): it falls with the mesh as h^2, like the geometric
+ * error of the discrete surface, and stays below it for f = 10 at the
+ * membrane strains of inflated structures.
+ */
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/base/types.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <pneuma/contact/obstacles/obstacle_parameters.h>
+#include <pneuma/membrane/constitutive_law.h>
+#include <pneuma/membrane/reference_geometry.h>
+
+#include <limits>
+#include <vector>
+
+namespace pneuma
+{
+  namespace contact
+  {
+    using namespace dealii;
+
+    /// What the contact with one obstacle adds up over points.
+    struct ObstacleSums
+    {
+      /// Force on the obstacle [N].
+      Tensor<1, 3> force;
+      /// Penalty energy [J].
+      double energy = 0.;
+      /// Current area of the points in contact [m^2] (if asked for).
+      double area = 0.;
+      /// Largest penetration -g [m].
+      double penetration = 0.;
+      /// Points in contact.
+      unsigned int points = 0;
+
+      /// Add @p other (sums, and the larger penetration).
+      void
+      add(const ObstacleSums &other);
+    };
+
+    /// Per-cell values for output.
+    struct ObstacleCellOutput
+    {
+      /// Mean true contact pressure over the cell's points [Pa].
+      double pressure = 0.;
+      /// Smallest gap at the cell's points to any obstacle [m].
+      double gap = std::numeric_limits<double>::max();
+    };
+
+    /// The contact terms of all obstacles on one membrane cell.
+    class ObstacleContact
+    {
+    public:
+      ObstacleContact(const std::vector<ObstacleDefinition> &obstacles,
+                      const membrane::MaterialRegions       &materials);
+
+      /// The obstacles' translations d_k(t) (not concurrently: it sets
+      /// the time of their functions).
+      std::vector<Tensor<1, 3>>
+      translations(const double t) const;
+
+      /// Penalty of obstacle @p k on a cell of region @p id with
+      /// reference area @p area and element degree @p degree [Pa/m].
+      double
+      penalty(const unsigned int       k,
+              const types::material_id id,
+              const double             area,
+              const unsigned int       degree) const;
+
+      /**
+       * The contact terms of the cell @p cell_index of @p reference, of
+       * region @p id, at its displacement @p local_u, with the obstacles
+       * at @p translations: add the residual and
+       * tangent to @p residual and @p matrix (either may be nullptr), the
+       * sums per obstacle to @p sums (one per obstacle; the areas only if
+       * @p with_area) and, if given, the cell's output values. May run
+       * concurrently on other cells.
+       */
+      void
+      cell(const types::material_id           id,
+           const membrane::ReferenceGeometry &reference,
+           const unsigned int                 cell_index,
+           const std::vector<double>         &local_u,
+           const std::vector<Tensor<1, 3>>   &translations,
+           FullMatrix<double>                *matrix,
+           Vector<double>                    *residual,
+           std::vector<ObstacleSums>         &sums,
+           const bool                         with_area,
+           ObstacleCellOutput                *output = nullptr) const;
+
+      /// Number of obstacles.
+      unsigned int
+      size() const
+      {
+        return obstacles.size();
+      }
+
+    private:
+      const std::vector<ObstacleDefinition> &obstacles;
+      const membrane::MaterialRegions       &materials;
+    };
+  } // namespace contact
+} // namespace pneuma

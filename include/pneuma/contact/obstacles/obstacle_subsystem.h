@@ -1,0 +1,132 @@
+#pragma once
+
+/**
+ * @file
+ * Rigid obstacles as a subsystem of the coupled model (core/subsystem.h):
+ * the penalty contact of the membrane with planes, spheres and cylinders
+ * that stand still or move by a prescribed translation
+ * (contact/obstacles/obstacle_contact.h, doc/theory.md "Rigid
+ * obstacles"). Present only when "Obstacles/Number of obstacles" is
+ * positive. It has no unknowns: its terms join the membrane's cell loop
+ * (membrane::CellTerms), and its forces count as applied loads in the
+ * membrane's reactions; each obstacle reports the force on it, its
+ * contact area, its largest penetration and its penalty energy.
+ */
+
+#include <pneuma/contact/obstacles/obstacle_contact.h>
+#include <pneuma/contact/obstacles/obstacle_parameters.h>
+#include <pneuma/core/capabilities.h>
+#include <pneuma/core/subsystem.h>
+#include <pneuma/membrane/cell_terms.h>
+#include <pneuma/membrane/membrane_subsystem.h>
+
+#include <memory>
+
+namespace pneuma
+{
+  namespace contact
+  {
+    /// The rigid obstacles.
+    class ObstacleSubsystem : public Subsystem,
+                              public membrane::CellTerms,
+                              public OutputFiles,
+                              public Holds
+    {
+    public:
+      explicit ObstacleSubsystem(Model &model);
+
+      /// "Obstacles/Number of obstacles".
+      static void
+      declare_switches(ParameterHandler &prm);
+      static bool
+      is_active(const InputLayout &layout);
+
+      std::string
+      name() const override
+      {
+        return "obstacles";
+      }
+      /// The membrane may rest on the obstacles.
+      bool
+      holds(const Subsystem &other) const override;
+      void
+      declare_parameters(ParameterHandler  &prm,
+                         const InputLayout &layout) override;
+      void
+      parse_parameters(ParameterHandler &prm) override;
+      /// The regions exist; print each obstacle and its penalty.
+      void
+      finish_setup() override;
+      /// No point of the membrane starts inside an obstacle.
+      void
+      initialize(const LA::Vector &field, const double t) override;
+      void
+      assemble(const Assembly &) override
+      {
+        // The terms are assembled in the membrane's cell loop.
+      }
+      void
+      add_statistics(Statistics       &statistics,
+                     const LA::Vector &field,
+                     const double      t) const override;
+      void
+      add_output_fields(const LA::Vector &field, const double t) override;
+
+      // ---- membrane::CellTerms: the contact terms on the membrane's cells
+      void
+      begin(const Assembly &a) override;
+      std::unique_ptr<membrane::CellTerms::Scratch>
+      new_scratch() const override;
+      std::unique_ptr<membrane::CellTerms::Record>
+      new_record() const override;
+      void
+      cell(const DoFHandler<2, 3>::active_cell_iterator &cell,
+           const membrane::ReferenceGeometry            &reference,
+           const unsigned int                            cell_index,
+           const std::vector<double>                    &local_u,
+           FullMatrix<double>                           *cell_matrix,
+           Vector<double>                               *cell_residual,
+           membrane::CellTerms::Scratch                 &scratch,
+           membrane::CellTerms::Record                  &record) const override;
+      void
+      commit(const membrane::CellTerms::Record          &record,
+             const std::vector<types::global_dof_index> &dof_indices) override;
+      void
+      end() override
+      {
+      }
+      void
+      add_loads(const LA::Vector                &u,
+                const AffineConstraints<double> &constraints,
+                const double                     t,
+                LA::Vector                      &residual,
+                LA::Vector                      &external) const override;
+
+    private:
+      /// The sums over this rank's cells at the ghosted state @p u and
+      /// time @p t, and (if given) the cells' output values by active cell
+      /// index.
+      std::vector<ObstacleSums>
+      sums(const LA::Vector                &u,
+           const double                     t,
+           std::vector<ObstacleCellOutput> *cells = nullptr) const;
+      /// The smallest and largest penalty of each obstacle over the cells
+      /// it may touch (over the ranks).
+      std::vector<std::pair<double, double>>
+      penalty_range() const;
+      /// The membrane's values of the owned cell @p cell_index in @p u.
+      void
+      cell_values(const LA::Vector    &u,
+                  const unsigned int   cell_index,
+                  std::vector<double> &local_u) const;
+
+      Model                           &model;
+      membrane::MembraneSubsystem     &membrane;
+      ObstacleParameters               parameters;
+      std::unique_ptr<ObstacleContact> contact;
+      /// The obstacles' translations at the time of the assembly.
+      std::vector<Tensor<1, 3>> assembly_translations;
+      Vector<float>             pressure_output, gap_output;
+    };
+  } // namespace contact
+} // namespace pneuma

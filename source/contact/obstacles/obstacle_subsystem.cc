@@ -1,0 +1,411 @@
+#include <deal.II/base/mpi.h>
+
+#include <pneuma/contact/obstacles/obstacle_subsystem.h>
+#include <pneuma/core/collective_error.h>
+#include <pneuma/core/input_error.h>
+#include <pneuma/core/input_layout.h>
+#include <pneuma/core/model.h>
+
+#include <iomanip>
+#include <sstream>
+
+namespace pneuma
+{
+  namespace contact
+  {
+    namespace
+    {
+      membrane::MembraneSubsystem &
+      the_membrane(Model &model)
+      {
+        auto *m = model.find<membrane::MembraneSubsystem>();
+        check_input(m != nullptr,
+                    "Obstacles/Number of obstacles",
+                    "obstacles need a membrane (Geometry/Type is none)");
+        return *m;
+      }
+
+      /// The element degree of a cell with @p n_nodes nodes.
+      unsigned int
+      degree_of(const unsigned int n_nodes)
+      {
+        return n_nodes == 4 ? 1 : 2;
+      }
+
+      /// The reference area of the owned cell @p c.
+      double
+      cell_area(const membrane::ReferenceGeometry &reference,
+                const unsigned int                 c)
+      {
+        double area = 0.;
+        for (unsigned int q = 0; q < reference.n_q_points(); ++q)
+          area += reference.point(c, q).JxW;
+        return area;
+      }
+
+      /// Records hold nothing: the contact adds no sums across cells to
+      /// an assembly.
+      struct NoScratch : membrane::CellTerms::Scratch
+      {
+      };
+      struct NoRecord : membrane::CellTerms::Record
+      {
+      };
+    } // namespace
+
+    ObstacleSubsystem::ObstacleSubsystem(Model &model)
+      : model(model)
+      , membrane(the_membrane(model))
+    {
+      membrane.add_cell_terms(*this);
+    }
+
+    void
+    ObstacleSubsystem::declare_switches(ParameterHandler &prm)
+    {
+      ObstacleParameters::declare_count(prm);
+    }
+
+    bool
+    ObstacleSubsystem::is_active(const InputLayout &layout)
+    {
+      return !layout
+                .numbered("Obstacles",
+                          "Obstacle",
+                          "Obstacles/Number of obstacles")
+                .empty();
+    }
+
+    bool
+    ObstacleSubsystem::holds(const Subsystem &other) const
+    {
+      return &other == &membrane;
+    }
+
+    void
+    ObstacleSubsystem::declare_parameters(ParameterHandler  &prm,
+                                          const InputLayout &layout)
+    {
+      parameters.declare_parameters(prm, layout);
+    }
+
+    void
+    ObstacleSubsystem::parse_parameters(ParameterHandler &prm)
+    {
+      parameters.parse_parameters(prm);
+    }
+
+    void
+    ObstacleSubsystem::finish_setup()
+    {
+      const auto &ids = membrane.material_ids();
+      for (const auto &def : parameters.obstacles)
+        for (const auto id : def.regions)
+          check_input(ids.count(id) > 0,
+                      def.path + "/Regions",
+                      "the mesh has no cells in region " + std::to_string(id));
+      contact          = std::make_unique<ObstacleContact>(parameters.obstacles,
+                                                  membrane.material_regions());
+      const auto range = penalty_range();
+      for (unsigned int k = 0; k < contact->size(); ++k)
+        {
+          const auto &def     = parameters.obstacles[k];
+          const auto [lo, hi] = range[k];
+          std::ostringstream s;
+          s << std::setprecision(3) << def.path << ": " << def.shape->describe()
+            << "; penalty ";
+          if (def.penalty > 0.)
+            s << def.penalty << " Pa/m (given)";
+          else
+            s << lo << " to " << hi << " Pa/m (" << def.penalty_factor
+              << " E t / h^2 on the cells it may touch; Penalty = 0)";
+          model.out() << s.str() << std::endl;
+        }
+    }
+
+    std::vector<std::pair<double, double>>
+    ObstacleSubsystem::penalty_range() const
+    {
+      const auto        &reference = membrane.reference_geometry();
+      const unsigned int degree    = degree_of(reference.n_nodes());
+      const MPI_Comm     comm      = model.mpi_communicator();
+      std::vector<std::pair<double, double>> range(contact->size(),
+                                                   {1e300, 0.});
+      unsigned int                           c = 0;
+      for (const auto &cell : membrane.dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const double area = cell_area(reference, c++);
+            for (unsigned int k = 0; k < contact->size(); ++k)
+              if (parameters.obstacles[k].touches(cell->material_id()))
+                {
+                  const double eps =
+                    contact->penalty(k, cell->material_id(), area, degree);
+                  range[k].first  = std::min(range[k].first, eps);
+                  range[k].second = std::max(range[k].second, eps);
+                }
+          }
+      for (auto &[lo, hi] : range)
+        {
+          lo = Utilities::MPI::min(lo, comm);
+          hi = Utilities::MPI::max(hi, comm);
+        }
+      return range;
+    }
+
+    void
+    ObstacleSubsystem::cell_values(const LA::Vector    &u,
+                                   const unsigned int   cell_index,
+                                   std::vector<double> &local_u) const
+    {
+      const auto &reference = membrane.reference_geometry();
+      const auto *dofs      = reference.dof_indices(cell_index);
+      local_u.resize(3 * reference.n_nodes());
+      for (unsigned int i = 0; i < local_u.size(); ++i)
+        local_u[i] = u[dofs[i]];
+    }
+
+    std::vector<ObstacleSums>
+    ObstacleSubsystem::sums(const LA::Vector                &u,
+                            const double                     t,
+                            std::vector<ObstacleCellOutput> *cells) const
+    {
+      const auto               &reference    = membrane.reference_geometry();
+      const auto                translations = contact->translations(t);
+      std::vector<ObstacleSums> total(contact->size());
+      std::vector<double>       local_u;
+      unsigned int              c = 0;
+      for (const auto &cell : membrane.dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cell_values(u, c, local_u);
+            std::vector<ObstacleSums> part(contact->size());
+            contact->cell(cell->material_id(),
+                          reference,
+                          c++,
+                          local_u,
+                          translations,
+                          nullptr,
+                          nullptr,
+                          part,
+                          true,
+                          cells ? &(*cells)[cell->active_cell_index()]
+                                : nullptr);
+            for (unsigned int k = 0; k < total.size(); ++k)
+              total[k].add(part[k]);
+          }
+      return total;
+    }
+
+    void
+    ObstacleSubsystem::initialize(const LA::Vector &field, const double t)
+    {
+      // The first point (in cell order, on the lowest rank) that starts
+      // more than 1 % of its offset inside an obstacle.
+      const auto         &reference    = membrane.reference_geometry();
+      const auto          translations = contact->translations(t);
+      std::string         found;
+      std::vector<double> local_u;
+      unsigned int        c = 0;
+      for (const auto &cell : membrane.dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned() && found.empty())
+          {
+            cell_values(field, c, local_u);
+            std::vector<ObstacleSums>       part(contact->size());
+            std::vector<ObstacleCellOutput> unused(1);
+            const double                    offset =
+              0.5 * membrane.material_regions()[cell->material_id()].thickness;
+            for (unsigned int k = 0; k < contact->size() && found.empty(); ++k)
+              {
+                if (!parameters.obstacles[k].touches(cell->material_id()))
+                  continue;
+                std::vector<ObstacleSums> one(contact->size());
+                contact->cell(cell->material_id(),
+                              reference,
+                              c,
+                              local_u,
+                              translations,
+                              nullptr,
+                              nullptr,
+                              one,
+                              false);
+                if (one[k].penetration > 0.01 * offset + 1e-12)
+                  {
+                    std::ostringstream s;
+                    s << std::setprecision(4)
+                      << "the membrane starts inside the obstacle: the cell "
+                         "at "
+                      << format_point(cell->center()) << " (region "
+                      << int(cell->material_id()) << ") is "
+                      << one[k].penetration
+                      << " m deep, counting its half thickness " << offset
+                      << " m as the offset; move the obstacle (a plane under "
+                         "a membrane at z = 0 goes at z = -t/2)";
+                    found = parameters.obstacles[k].path + ": " + s.str();
+                  }
+              }
+            ++c;
+          }
+      throw_if_any(model.mpi_communicator(), found);
+    }
+
+    void
+    ObstacleSubsystem::begin(const Assembly &a)
+    {
+      assembly_translations = contact->translations(a.time);
+    }
+
+    std::unique_ptr<membrane::CellTerms::Scratch>
+    ObstacleSubsystem::new_scratch() const
+    {
+      return std::make_unique<NoScratch>();
+    }
+
+    std::unique_ptr<membrane::CellTerms::Record>
+    ObstacleSubsystem::new_record() const
+    {
+      return std::make_unique<NoRecord>();
+    }
+
+    void
+    ObstacleSubsystem::cell(const DoFHandler<2, 3>::active_cell_iterator &cell,
+                            const membrane::ReferenceGeometry &reference,
+                            const unsigned int                 cell_index,
+                            const std::vector<double>         &local_u,
+                            FullMatrix<double>                *cell_matrix,
+                            Vector<double>                    *cell_residual,
+                            membrane::CellTerms::Scratch &,
+                            membrane::CellTerms::Record &) const
+    {
+      std::vector<ObstacleSums> unused(contact->size());
+      contact->cell(cell->material_id(),
+                    reference,
+                    cell_index,
+                    local_u,
+                    assembly_translations,
+                    cell_matrix,
+                    cell_residual,
+                    unused,
+                    false);
+    }
+
+    void
+    ObstacleSubsystem::commit(const membrane::CellTerms::Record &,
+                              const std::vector<types::global_dof_index> &)
+    {
+    }
+
+    void
+    ObstacleSubsystem::add_loads(const LA::Vector                &u,
+                                 const AffineConstraints<double> &constraints,
+                                 const double                     t,
+                                 LA::Vector                      &residual,
+                                 LA::Vector &external) const
+    {
+      // The contact forces f: -f into the residual, +f into the loads.
+      const auto &reference    = membrane.reference_geometry();
+      const auto  translations = contact->translations(t);
+      LA::Vector  part(residual);
+      part = 0.;
+      std::vector<double>                  local_u;
+      std::vector<types::global_dof_index> dofs(3 * reference.n_nodes());
+      Vector<double>                       cell_residual(dofs.size());
+      std::vector<ObstacleSums>            unused(contact->size());
+      unsigned int                         c = 0;
+      for (const auto &cell : membrane.dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cell_values(u, c, local_u);
+            cell_residual = 0.;
+            contact->cell(cell->material_id(),
+                          reference,
+                          c,
+                          local_u,
+                          translations,
+                          nullptr,
+                          &cell_residual,
+                          unused,
+                          false);
+            const auto *d = reference.dof_indices(c++);
+            dofs.assign(d, d + dofs.size());
+            constraints.distribute_local_to_global(cell_residual, dofs, part);
+          }
+      part.compress(VectorOperation::add);
+      residual += part;
+      external -= part;
+    }
+
+    void
+    ObstacleSubsystem::add_statistics(Statistics       &statistics,
+                                      const LA::Vector &field,
+                                      const double      t) const
+    {
+      using R              = Statistics::Reduction;
+      constexpr auto all   = Statistics::all;
+      const auto     total = sums(field, t);
+      const auto     moved = contact->translations(t);
+      const auto     range = statistics.is_summary()
+                               ? penalty_range()
+                               : std::vector<std::pair<double, double>>();
+      for (unsigned int k = 0; k < total.size(); ++k)
+        {
+          const auto           &s = total[k];
+          const StatisticsGroup g{"obstacle", "obstacles", "obstacle", k + 1};
+          statistics.add_vector(g,
+                                "force",
+                                "N",
+                                {{s.force[0], s.force[1], s.force[2]}},
+                                all,
+                                R::sum);
+          statistics.add(g, "contact_area", "m^2", s.area, all, R::sum);
+          statistics.add(g, "penetration", "m", s.penetration, all, R::max);
+          statistics.add(
+            g, "energy", "J", s.energy, Statistics::report, R::sum);
+          statistics.add_count(
+            g, "contact_points", s.points, Statistics::report, R::sum);
+          if (statistics.is_summary())
+            {
+              statistics.add(
+                g, "penalty_min", "Pa/m", range[k].first, Statistics::summary);
+              statistics.add(
+                g, "penalty_max", "Pa/m", range[k].second, Statistics::summary);
+            }
+          statistics.add_vector(g,
+                                "displacement",
+                                "m",
+                                {{moved[k][0], moved[k][1], moved[k][2]}},
+                                Statistics::report);
+        }
+    }
+
+    void
+    ObstacleSubsystem::add_output_fields(const LA::Vector &field,
+                                         const double      t)
+    {
+      const auto n = membrane.triangulation().n_active_cells();
+      std::vector<ObstacleCellOutput> cells(n);
+      sums(field, t, &cells);
+      pressure_output.reinit(n);
+      gap_output.reinit(n);
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          pressure_output[i] = cells[i].pressure;
+          // Cells of other ranks keep no gap.
+          gap_output[i] = cells[i].gap < 1e300 ? cells[i].gap : 0.;
+        }
+      auto &out = membrane.data_out();
+      out.add_data_vector(pressure_output,
+                          "obstacle_pressure",
+                          DataOut<2, 3>::type_cell_data);
+      out.add_data_vector(gap_output,
+                          "obstacle_gap",
+                          DataOut<2, 3>::type_cell_data);
+    }
+  } // namespace contact
+} // namespace pneuma
+
+PNEUMA_REGISTER_SUBSYSTEM(pneuma::contact::ObstacleSubsystem,
+                          "obstacles",
+                          45,
+                          pneuma::contact::ObstacleSubsystem::declare_switches,
+                          pneuma::contact::ObstacleSubsystem::is_active)
