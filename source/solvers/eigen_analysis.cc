@@ -302,7 +302,8 @@ namespace pneuma
                                      owned,
                                      !non_symmetric);
         result.factorization_seconds = factorizing.wall_time();
-        if (inverse.zero_pivots > 0)
+        result.singular              = inverse.zero_pivots > 0;
+        if (result.singular)
           throw std::runtime_error(
             "the tangent minus the shift is singular (an eigenvalue "
             "at the shift, or a free rigid motion): change Eigen "

@@ -121,6 +121,9 @@ namespace pneuma
       double       seconds               = 0.;
       /// Why it was not computed (empty: it was).
       std::string error;
+      /// It was not computed because the shifted tangent is singular (an
+      /// eigenvalue at the shift, or a free rigid motion).
+      bool singular = false;
     };
 
     /// Runs the eigen analysis of a converged state.

@@ -38,7 +38,7 @@ namespace pneuma
                                 + as_text(t) + ", but ";
       // The shift is 0 here: a singular tangent has no stiffness against
       // some motion.
-      const bool singular = modes.error.find("singular") != std::string::npos;
+      const bool singular = modes.singular;
       check_input(modes.error.empty(),
                   entry,
                   where
