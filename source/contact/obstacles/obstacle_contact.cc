@@ -151,52 +151,64 @@ namespace pneuma
                           ObstacleCellOutput                *output) const
     {
       const unsigned int n_q = reference.n_q_points(), n = reference.n_nodes();
-      const NodeDofs     dof = node_dofs(reference);
-      const unsigned int degree =
-        static_cast<unsigned int>(std::lround(std::sqrt(double(n)))) - 1;
-      double cell_area = 0.;
-      for (unsigned int q = 0; q < n_q; ++q)
-        cell_area += reference.point(cell_index, q).JxW;
+      const NodeDofs     dof  = node_dofs(reference);
+      const double       area = cell_area(reference, cell_index);
+      // Each obstacle's penalty on this cell (0: it does not act here).
+      std::array<double, max_obstacles> eps{};
+      for (unsigned int k = 0; k < obstacles.size(); ++k)
+        if (obstacles[k].touches(id))
+          eps[k] = penalty(k, id, area, element_degree(reference));
       const double offset  = 0.5 * materials[id].thickness;
       const bool   stretch = with_area || output != nullptr;
       // For the output: the contact force and the current area.
       double force = 0., current_area = 0.;
-      for (unsigned int k = 0; k < obstacles.size(); ++k)
+      for (unsigned int q = 0; q < n_q; ++q)
         {
-          const bool   acts = obstacles[k].touches(id);
-          const double eps  = acts ? penalty(k, id, cell_area, degree) : 0.;
-          for (unsigned int q = 0; q < n_q; ++q)
+          double         J = 1.;
+          const Point<3> x = current_point(
+            reference, cell_index, q, dof, local_u, stretch ? &J : nullptr);
+          const double  w = reference.point(cell_index, q).JxW;
+          const double *N = reference.shape_values(q);
+          current_area += J * w;
+          for (unsigned int k = 0; k < obstacles.size(); ++k)
             {
-              double         J = 1.;
-              const Point<3> x = current_point(
-                reference, cell_index, q, dof, local_u, stretch ? &J : nullptr);
               const SignedDistance s =
                 obstacles[k].shape->distance(x - translations[k]);
               const double g = s.phi - offset;
               if (output != nullptr)
-                {
-                  output->gap = std::min(output->gap, g);
-                  if (k == 0)
-                    current_area += J * reference.point(cell_index, q).JxW;
-                }
-              if (!acts || g >= 0.)
+                output->gap = std::min(output->gap, g);
+              if (eps[k] == 0. || g >= 0.)
                 continue;
-              const double  w   = reference.point(cell_index, q).JxW;
-              const double *N   = reference.shape_values(q);
-              const double  p   = -eps * g; // nominal pressure
+              const double  p   = -eps[k] * g; // nominal pressure
               ObstacleSums &sum = sums[k];
               sum.force -= p * w * s.normal;
-              sum.energy += 0.5 * eps * g * g * w;
+              sum.energy += 0.5 * eps[k] * g * g * w;
               sum.penetration = std::max(sum.penetration, -g);
               ++sum.points;
               if (with_area)
                 sum.area += J * w;
               force += p * w;
-              add_point_terms(s, g, eps, N, w, n, dof, matrix, residual);
+              add_point_terms(s, g, eps[k], N, w, n, dof, matrix, residual);
             }
         }
       if (output != nullptr && current_area > 0.)
         output->pressure = force / current_area;
+    }
+
+    double
+    cell_area(const membrane::ReferenceGeometry &reference,
+              const unsigned int                 cell_index)
+    {
+      double area = 0.;
+      for (unsigned int q = 0; q < reference.n_q_points(); ++q)
+        area += reference.point(cell_index, q).JxW;
+      return area;
+    }
+
+    unsigned int
+    element_degree(const membrane::ReferenceGeometry &reference)
+    {
+      return reference.n_nodes() == 4 ? 1 : 2;
     }
   } // namespace contact
 } // namespace pneuma

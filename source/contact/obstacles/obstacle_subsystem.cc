@@ -25,29 +25,13 @@ namespace pneuma
         return *m;
       }
 
-      /// The element degree of a cell with @p n_nodes nodes.
-      unsigned int
-      degree_of(const unsigned int n_nodes)
+      /// A thread's sums of a cell (an assembly does not add them up).
+      struct SumsScratch : membrane::CellTerms::Scratch
       {
-        return n_nodes == 4 ? 1 : 2;
-      }
-
-      /// The reference area of the owned cell @p c.
-      double
-      cell_area(const membrane::ReferenceGeometry &reference,
-                const unsigned int                 c)
-      {
-        double area = 0.;
-        for (unsigned int q = 0; q < reference.n_q_points(); ++q)
-          area += reference.point(c, q).JxW;
-        return area;
-      }
-
+        std::vector<ObstacleSums> sums;
+      };
       /// Records hold nothing: the contact adds no sums across cells to
       /// an assembly.
-      struct NoScratch : membrane::CellTerms::Scratch
-      {
-      };
       struct NoRecord : membrane::CellTerms::Record
       {
       };
@@ -127,7 +111,7 @@ namespace pneuma
     ObstacleSubsystem::penalty_range() const
     {
       const auto        &reference = membrane.reference_geometry();
-      const unsigned int degree    = degree_of(reference.n_nodes());
+      const unsigned int degree    = element_degree(reference);
       const MPI_Comm     comm      = model.mpi_communicator();
       std::vector<std::pair<double, double>> range(contact->size(),
                                                    {1e300, 0.});
@@ -211,39 +195,32 @@ namespace pneuma
         if (cell->is_locally_owned() && found.empty())
           {
             cell_values(field, c, local_u);
-            std::vector<ObstacleSums>       part(contact->size());
-            std::vector<ObstacleCellOutput> unused(1);
-            const double                    offset =
+            std::vector<ObstacleSums> sums(contact->size());
+            contact->cell(cell->material_id(),
+                          reference,
+                          c,
+                          local_u,
+                          translations,
+                          nullptr,
+                          nullptr,
+                          sums,
+                          false);
+            const double offset =
               0.5 * membrane.material_regions()[cell->material_id()].thickness;
             for (unsigned int k = 0; k < contact->size() && found.empty(); ++k)
-              {
-                if (!parameters.obstacles[k].touches(cell->material_id()))
-                  continue;
-                std::vector<ObstacleSums> one(contact->size());
-                contact->cell(cell->material_id(),
-                              reference,
-                              c,
-                              local_u,
-                              translations,
-                              nullptr,
-                              nullptr,
-                              one,
-                              false);
-                if (one[k].penetration > 0.01 * offset + 1e-12)
-                  {
-                    std::ostringstream s;
-                    s << std::setprecision(4)
-                      << "the membrane starts inside the obstacle: the cell "
-                         "at "
-                      << format_point(cell->center()) << " (region "
-                      << int(cell->material_id()) << ") is "
-                      << one[k].penetration
-                      << " m deep, counting its half thickness " << offset
-                      << " m as the offset; move the obstacle (a plane under "
-                         "a membrane at z = 0 goes at z = -t/2)";
-                    found = parameters.obstacles[k].path + ": " + s.str();
-                  }
-              }
+              if (sums[k].penetration > 0.01 * offset + 1e-12)
+                {
+                  std::ostringstream s;
+                  s << std::setprecision(4)
+                    << "the membrane starts inside the obstacle: the cell at "
+                    << format_point(cell->center()) << " (region "
+                    << int(cell->material_id()) << ") is "
+                    << sums[k].penetration
+                    << " m deep, counting its half thickness " << offset
+                    << " m as the offset; move the obstacle (a plane under a "
+                       "membrane at z = 0 goes at z = -t/2)";
+                  found = parameters.obstacles[k].path + ": " + s.str();
+                }
             ++c;
           }
       throw_if_any(model.mpi_communicator(), found);
@@ -258,7 +235,9 @@ namespace pneuma
     std::unique_ptr<membrane::CellTerms::Scratch>
     ObstacleSubsystem::new_scratch() const
     {
-      return std::make_unique<NoScratch>();
+      auto scratch = std::make_unique<SumsScratch>();
+      scratch->sums.resize(contact->size());
+      return scratch;
     }
 
     std::unique_ptr<membrane::CellTerms::Record>
@@ -274,10 +253,10 @@ namespace pneuma
                             const std::vector<double>         &local_u,
                             FullMatrix<double>                *cell_matrix,
                             Vector<double>                    *cell_residual,
-                            membrane::CellTerms::Scratch &,
+                            membrane::CellTerms::Scratch      &scratch,
                             membrane::CellTerms::Record &) const
     {
-      std::vector<ObstacleSums> unused(contact->size());
+      auto &sums = static_cast<SumsScratch &>(scratch).sums;
       contact->cell(cell->material_id(),
                     reference,
                     cell_index,
@@ -285,7 +264,7 @@ namespace pneuma
                     assembly_translations,
                     cell_matrix,
                     cell_residual,
-                    unused,
+                    sums,
                     false);
     }
 

@@ -71,6 +71,15 @@ namespace pneuma
       double gap = std::numeric_limits<double>::max();
     };
 
+    /// The reference area of the owned cell @p cell_index.
+    double
+    cell_area(const membrane::ReferenceGeometry &reference,
+              const unsigned int                 cell_index);
+
+    /// The element degree of the cells of @p reference (Q1 or Q2).
+    unsigned int
+    element_degree(const membrane::ReferenceGeometry &reference);
+
     /// The contact terms of all obstacles on one membrane cell.
     class ObstacleContact
     {
