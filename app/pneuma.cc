@@ -46,7 +46,8 @@ namespace
 int
 main(int argc, char **argv)
 {
-  pneuma::prepare_mpi_start();
+  // Destroyed after MPI_Finalize (mpi's destructor).
+  const pneuma::MpiStart                   mpi_start;
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const MPI_Comm                           comm = MPI_COMM_WORLD;
   const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
