@@ -269,11 +269,11 @@ def run_case(args, k, files, patterns):
                "sleeping hang)")
     problems = []
     if code not in (0, 1, 2):
-        problems.append(f"exit {code}: " + log.strip()[-600:])
+        problems.append(f"exit {code}: " + log.strip()[-2000:])
     else:
         problems += outputs_clean(out, code)
         if code == 1 and "pneuma: error in " not in log:
-            problems.append("exit 1 without a message: " + log[-300:])
+            problems.append("exit 1 without a message: " + log.strip()[-2000:])
     if not problems:
         shutil.rmtree(work, ignore_errors=True)
     if args.verbose:
