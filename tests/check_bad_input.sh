@@ -236,6 +236,17 @@ check "$dir/valid.prm"              1 "Shape" "${o[@]}" --set "Obstacles/Obstacl
 check "$dir/valid.prm"              1 "Obstacle 2" "${o[@]}" --set "Obstacles/Obstacle 2/Penalty=1"
 check "$dir/valid.prm"              1 "Obstacles/Obstacle 1: the membrane starts inside the obstacle" --set "Obstacles/Number of obstacles=1"
 check_mpi "$dir/valid.prm"          1 "Obstacles/Obstacle 1: the membrane starts inside the obstacle" --set "Obstacles/Number of obstacles=1"
+# Membrane-to-membrane contact: regions, penalties, and membranes that
+# overlap at the start (meshes/two_sheets.msh: 0.5 mm apart, t = 1 mm).
+surface=(--set "Surface contact/Number of pairs=1")
+check "$dir/valid.prm"              1 "Surface contact/Pair 1/Opposite regions: the mesh has no cells in region 5" "${surface[@]}" --set "Surface contact/Pair 1/Regions=0" --set "Surface contact/Pair 1/Opposite regions=5"
+check "$dir/valid.prm"              1 "Surface contact/Pair 1/Opposite regions: region 0 is on both sides" "${surface[@]}" --set "Surface contact/Pair 1/Regions=0" --set "Surface contact/Pair 1/Opposite regions=0"
+check "$dir/valid.prm"              1 "Surface contact/Pair 1/Penalty" "${surface[@]}" --set "Surface contact/Pair 1/Penalty=-1"
+check "$dir/valid.prm"              1 "Surface contact/Pair 1/Penalty factor: must be positive and finite when Penalty is 0" "${surface[@]}" --set "Surface contact/Pair 1/Penalty factor=0"
+check "$dir/valid.prm"              1 "Surface contact/Pair 2" "${surface[@]}" --set "Surface contact/Pair 2/Penalty=1"
+overlap=("${surface[@]}" --set "Geometry/Type=gmsh" --set "Geometry/gmsh/Mesh file=$dir/../../meshes/two_sheets.msh" --set "Materials/Region 1/Thickness=1e-3" --set "Materials/Region 2/Thickness=1e-3" --set "Surface contact/Pair 1/Regions=1" --set "Surface contact/Pair 1/Opposite regions=2")
+check "$dir/valid.prm"              1 "Surface contact/Pair 1: the point" "${overlap[@]}"
+check_mpi "$dir/valid.prm"          1 "the membranes overlap at the start" "${overlap[@]}"
 check "$dir/valid.prm"              0 "" "${o[@]}"
 # Ill-posed scenes: free rigid-body motions, named before any work.
 check "$dir/valid.prm"              1 "Boundary conditions: the membrane is free to move as a rigid body (translation along x; translation along y; translation along z; rotation about x" --set "Boundary conditions/Fixed boundaries="

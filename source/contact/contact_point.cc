@@ -306,6 +306,35 @@ namespace pneuma
       return rho;
     }
 
+    std::vector<double>
+    shape_values(const unsigned int degree, const Point<2> &xi)
+    {
+      double l1[3], dl1[3], ddl1[3], l2[3], dl2[3], ddl2[3];
+      lagrange(degree, xi[0], l1, dl1, ddl1);
+      lagrange(degree, xi[1], l2, dl2, ddl2);
+      const unsigned int  k = degree + 1;
+      std::vector<double> phi(k * k);
+      for (unsigned int a = 0; a < phi.size(); ++a)
+        phi[a] = l1[a % k] * l2[a / k];
+      return phi;
+    }
+
+    double
+    area_element(const MasterPatch &patch, const Point<2> &xi)
+    {
+      double l1[3], dl1[3], ddl1[3], l2[3], dl2[3], ddl2[3];
+      lagrange(patch.degree, xi[0], l1, dl1, ddl1);
+      lagrange(patch.degree, xi[1], l2, dl2, ddl2);
+      const unsigned int k = patch.degree + 1;
+      Tensor<1, 3>       d1, d2;
+      for (unsigned int a = 0; a < patch.nodes.size(); ++a)
+        {
+          d1 += dl1[a % k] * l2[a / k] * patch.nodes[a];
+          d2 += l1[a % k] * dl2[a / k] * patch.nodes[a];
+        }
+      return cross_product_3d(d1, d2).norm();
+    }
+
     std::pair<Tensor<1, 3>, Tensor<1, 3>>
     bounding_box(const MasterPatch &patch)
     {

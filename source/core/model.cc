@@ -210,6 +210,11 @@ namespace pneuma
     kinematic.reinit(relevant);
     for (const auto &s : subsystems)
       s->add_kinematic_constraints(kinematic);
+    // Every rank knows the constraints of all the dofs it sees, also of
+    // ghosts no cell of its touches (a membrane contact's masters on
+    // other ranks): assembling into such a row condenses it.
+    if (Utilities::MPI::n_mpi_processes(comm) > 1)
+      kinematic.make_consistent_in_parallel(owned, relevant, comm);
     kinematic.close();
     // Whether any rank has kinematic constraints: applying them is a
     // collective operation, and a rank that owns no plate or hanging node
@@ -225,6 +230,8 @@ namespace pneuma
     update_constraints.merge(kinematic);
     for (const auto &s : subsystems)
       s->add_update_constraints(update_constraints);
+    if (Utilities::MPI::n_mpi_processes(comm) > 1)
+      update_constraints.make_consistent_in_parallel(owned, relevant, comm);
     update_constraints.close();
     update_distribution.reinit(update_constraints, owned, comm);
   }

@@ -96,6 +96,15 @@ namespace pneuma
     Tensor<1, 3>
     position(const MasterPatch &patch, const Point<2> &xi);
 
+    /// The patch's shape functions phi_a(xi) of @p degree (1 or 2), in
+    /// lattice order: rho(xi) = sum_a phi_a(xi) y_a.
+    std::vector<double>
+    shape_values(const unsigned int degree, const Point<2> &xi);
+
+    /// The area element |rho_1 x rho_2| of @p patch at @p xi.
+    double
+    area_element(const MasterPatch &patch, const Point<2> &xi);
+
     /// The axis-aligned box (lower, upper corner) of the patch's nodes.
     std::pair<Tensor<1, 3>, Tensor<1, 3>>
     bounding_box(const MasterPatch &patch);

@@ -1,3 +1,4 @@
+#include <pneuma/contact/derived_penalty.h>
 #include <pneuma/contact/obstacles/obstacle_contact.h>
 
 #include <algorithm>
@@ -132,10 +133,7 @@ namespace pneuma
       const auto &def = obstacles[k];
       if (def.penalty > 0.)
         return def.penalty;
-      const auto  &m  = materials[id];
-      const double Et = 3. * m.plain_law->initial_shear_modulus() * m.thickness;
-      const double h2 = area / double(degree * degree);
-      return def.penalty_factor * Et / h2;
+      return derived_penalty(materials[id], area, degree, def.penalty_factor);
     }
 
     void
