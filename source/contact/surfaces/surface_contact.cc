@@ -191,8 +191,8 @@ namespace pneuma
     void
     SurfaceContact::make_sides()
     {
-      // The sides of every pair; the default search distance is the
-      // largest cell size (box diagonal) of its regions.
+      // The sides of every pair; the default search distance starts at a
+      // quarter of the largest cell size (box diagonal) of its regions.
       const int rank = Utilities::MPI::this_mpi_process(comm);
       pairs.assign(parameters.size(), PairData());
       for (unsigned int k = 0; k < parameters.size(); ++k)
@@ -226,7 +226,8 @@ namespace pneuma
               side.candidates.assign(side.slaves.size(), {});
               side.orientation.assign(side.slaves.size(), {});
             }
-          d.search = p.search_distance > 0. ? p.search_distance : h;
+          d.largest = h;
+          d.search  = p.search_distance > 0. ? p.search_distance : 0.25 * h;
         }
     }
 
@@ -329,7 +330,30 @@ namespace pneuma
     void
     SurfaceContact::commit(const LA::Vector *u)
     {
-      converged = current_patches(u);
+      auto patches = current_patches(u);
+      if (converged.size() == patches.size())
+        for (unsigned int k = 0; k < pairs.size(); ++k)
+          {
+            // The default search distance follows the motion: four times
+            // the largest node motion of the pair's cells in the step just
+            // accepted, at least twice the largest thickness and at most
+            // the largest cell size (a step that moves farther is cut
+            // back by check()).
+            if (parameters[k].search_distance > 0.)
+              continue;
+            double motion = 0.;
+            for (unsigned int c = 0; c < cells.size(); ++c)
+              if (pairs[k].sides[0].opposite[c]
+                  || pairs[k].sides.back().opposite[c])
+                for (unsigned int a = 0; a < patches[c].nodes.size(); ++a)
+                  motion = std::max(
+                    motion,
+                    (patches[c].nodes[a] - converged[c].nodes[a]).norm());
+            if (motion > 0.)
+              pairs[k].search = std::min(pairs[k].largest,
+                                         std::max(2. * thickest, 4. * motion));
+          }
+      converged = std::move(patches);
     }
 
     bool
@@ -360,21 +384,9 @@ namespace pneuma
                                              return m == s || touching(s, m);
                                            }),
                             found.end());
-                // The side of each point to each candidate: that of its
-                // signed distance to the candidate's surface in the last
-                // accepted state (@p u may be a prediction).
-                auto &o = side.orientation[i];
-                o.assign(points.size() * found.size(), 1);
-                for (unsigned int q = 0; q < points.size(); ++q)
-                  {
-                    const Tensor<1, 3> x = position(converged[s], points[q]);
-                    for (unsigned int j = 0; j < found.size(); ++j)
-                      {
-                        const Projection pr =
-                          project(converged[found[j]], x, 0.);
-                        o[q * found.size() + j] = pr.gap < 0. ? -1 : 1;
-                      }
-                  }
+                // The side of each point to each candidate: 0 (not yet
+                // known); side_of() measures it when first needed.
+                side.orientation[i].assign(points.size() * found.size(), 0);
                 for (const unsigned int m : found)
                   if (coupled.insert({s, m}).second)
                     grown = true;
@@ -397,25 +409,69 @@ namespace pneuma
         }
     }
 
-    int
-    SurfaceContact::nearest(const Side                     &side,
-                            const unsigned int              i,
-                            const Tensor<1, 3>             &x,
-                            const std::vector<MasterPatch> &patches,
-                            const double                    reach,
-                            Projection                     &projection) const
+    SurfaceContact::State
+    SurfaceContact::current_state(const LA::Vector &u) const
     {
-      int    best     = -1;
-      double distance = std::numeric_limits<double>::max();
+      State state;
+      state.patches = current_patches(&u);
+      state.boxes.resize(cells.size());
+      state.motion.assign(cells.size(), 0.);
+      for (unsigned int c = 0; c < cells.size(); ++c)
+        {
+          state.boxes[c] = bounding_box(state.patches[c]);
+          for (unsigned int a = 0; a < state.patches[c].nodes.size(); ++a)
+            state.motion[c] = std::max(
+              state.motion[c],
+              (state.patches[c].nodes[a] - converged[c].nodes[a]).norm());
+        }
+      return state;
+    }
+
+    signed char
+    SurfaceContact::side_of(const Side        &side,
+                            const unsigned int i,
+                            const unsigned int q,
+                            const unsigned int j) const
+    {
+      signed char &o = side.orientation[i][q * side.candidates[i].size() + j];
+      if (o == 0)
+        {
+          // The sign of the signed distance in the last accepted state.
+          const Tensor<1, 3> x = position(converged[side.slaves[i]], points[q]);
+          o =
+            project(converged[side.candidates[i][j]], x, 0.).gap < 0. ? -1 : 1;
+        }
+      return o;
+    }
+
+    int
+    SurfaceContact::nearest(const Side         &side,
+                            const unsigned int  i,
+                            const Tensor<1, 3> &x,
+                            const State        &state,
+                            Projection         &projection) const
+    {
+      const unsigned int s        = side.slaves[i];
+      int                best     = -1;
+      double             distance = std::numeric_limits<double>::max();
       for (unsigned int j = 0; j < side.candidates[i].size(); ++j)
         {
-          const unsigned int m = side.candidates[i][j];
-          // Farther than the search distance from the box: no contact
-          // with it. (Not the offset: a point that a Newton iterate took
-          // deep behind the cell must still be pushed back.)
-          if (!near_box(x, bounding_box(patches[m]), reach))
+          const unsigned int m   = side.candidates[i][j];
+          const Box         &box = state.boxes[m];
+          // A point farther from the cell's box than the offset, the bulge
+          // of a curved cell (bounded by its size) and the two cells'
+          // motion since the last accepted state cannot touch it: it was
+          // outside then. (A Newton iterate that took a point deep behind
+          // the cell is within that bound and pushed back.)
+          double size = 0.;
+          for (unsigned int d = 0; d < 3; ++d)
+            size = std::max(size, box.second[d] - box.first[d]);
+          if (!near_box(x,
+                        box,
+                        offset(s, m) + 0.25 * size + state.motion[s]
+                          + state.motion[m]))
             continue;
-          const Projection p = project(patches[m], x, 0.);
+          const Projection p = project(state.patches[m], x, 0.);
           if (p.inside && p.distance < distance)
             {
               distance   = p.distance;
@@ -427,9 +483,10 @@ namespace pneuma
     }
 
     std::vector<SurfaceContact::Active>
-    SurfaceContact::active_points(const std::vector<MasterPatch> &patches,
-                                  SurfaceRecord                  *record) const
+    SurfaceContact::active_points(const State   &state,
+                                  SurfaceRecord *record) const
     {
+      const auto         &patches = state.patches;
       std::vector<Active> active;
       for (unsigned int k = 0; k < pairs.size(); ++k)
         for (unsigned int s = 0; s < pairs[k].sides.size(); ++s)
@@ -442,17 +499,15 @@ namespace pneuma
                   {
                     const Tensor<1, 3> x = position(patches[c], points[q]);
                     Projection         p;
-                    const int          j =
-                      nearest(side, i, x, patches, pairs[k].search, p);
+                    const int          j = nearest(side, i, x, state, p);
                     if (record)
                       record->reports[k].points += 1;
                     if (j < 0)
                       continue;
-                    const unsigned int m = side.candidates[i][j];
-                    const signed char  o =
-                      side.orientation[i][q * side.candidates[i].size() + j];
-                    const double off = offset(c, m);
-                    const double gap = o * p.gap - off;
+                    const unsigned int m   = side.candidates[i][j];
+                    const signed char  o   = side_of(side, i, q, j);
+                    const double       off = offset(c, m);
+                    const double       gap = o * p.gap - off;
                     if (record)
                       record->cell_gap[c] = std::min(record->cell_gap[c], gap);
                     if (gap >= 0.)
@@ -529,7 +584,8 @@ namespace pneuma
                              LA::Vector                      *residual,
                              SurfaceRecord                   *record) const
     {
-      const auto patches = current_patches(&u);
+      const State state   = current_state(u);
+      const auto &patches = state.patches;
       if (record)
         {
           record->reports.assign(pairs.size(), SurfaceReport());
@@ -538,7 +594,7 @@ namespace pneuma
           record->cell_gap.assign(cells.size(),
                                   std::numeric_limits<double>::max());
         }
-      std::vector<Active> active = active_points(patches, record);
+      std::vector<Active> active = active_points(state, record);
       // The terms on the task threads (each point's differentiation is
       // independent), added in point order below: the sums do not depend
       // on the thread count.
@@ -629,10 +685,8 @@ namespace pneuma
     std::string
     SurfaceContact::check(const LA::Vector &u, const bool start) const
     {
-      const auto       patches = current_patches(&u);
-      std::vector<Box> boxes(cells.size());
-      for (unsigned int c = 0; c < cells.size(); ++c)
-        boxes[c] = bounding_box(patches[c]);
+      const State state = current_state(u);
+      const auto &boxes = state.boxes;
       std::string reason;
       for (unsigned int k = 0; k < pairs.size() && reason.empty(); ++k)
         for (const Side &side : pairs[k].sides)
@@ -645,7 +699,7 @@ namespace pneuma
             for (unsigned int i = 0; i < side.slaves.size() && reason.empty();
                  ++i)
               for (unsigned int q = 0; q < points.size() && reason.empty(); ++q)
-                reason = check_point(k, side, i, q, patches, tree, start);
+                reason = check_point(k, side, i, q, state, tree, start);
           }
       // The first reason of the lowest rank that has one.
       const auto all = Utilities::MPI::all_gather(comm, reason);
@@ -657,18 +711,19 @@ namespace pneuma
 
     template <class Tree>
     std::string
-    SurfaceContact::check_point(const unsigned int              k,
-                                const Side                     &side,
-                                const unsigned int              i,
-                                const unsigned int              q,
-                                const std::vector<MasterPatch> &patches,
-                                const Tree                     &tree,
-                                const bool                      start) const
+    SurfaceContact::check_point(const unsigned int k,
+                                const Side        &side,
+                                const unsigned int i,
+                                const unsigned int q,
+                                const State       &state,
+                                const Tree        &tree,
+                                const bool         start) const
     {
-      const unsigned int s    = side.slaves[i];
-      const auto        &cand = side.candidates[i];
-      const Tensor<1, 3> x    = position(patches[s], points[q]);
-      const auto         say  = [&](const unsigned int m,
+      const auto        &patches = state.patches;
+      const unsigned int s       = side.slaves[i];
+      const auto        &cand    = side.candidates[i];
+      const Tensor<1, 3> x       = position(patches[s], points[q]);
+      const auto         say     = [&](const unsigned int m,
                            const double       distance,
                            const std::string &what) {
         std::ostringstream o;
@@ -687,11 +742,10 @@ namespace pneuma
       // leaves gaps far below the offset).
       Projection p;
       if (!start)
-        if (const int j = nearest(side, i, x, patches, pairs[k].search, p);
-            j >= 0)
+        if (const int j = nearest(side, i, x, state, p); j >= 0)
           {
             const unsigned int m = cand[j];
-            const double       o = side.orientation[i][q * cand.size() + j];
+            const double       o = side_of(side, i, q, j);
             if (o * p.gap < 0.)
               return say(m,
                          p.distance,

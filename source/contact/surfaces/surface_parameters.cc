@@ -66,8 +66,10 @@ namespace pneuma
             p.search_distance,
             "How far apart [m] a point and a cell of the other side may be "
             "at the start of a load step to be tested in it; a step that "
-            "brings a point into a cell not tested is cut back. 0: the "
-            "largest cell size of the pair's regions.",
+            "brings a point into a cell not tested is cut back. 0: four "
+            "times the largest motion of the pair's nodes in the step "
+            "before (at least twice the thickness, at most the largest "
+            "cell size; a quarter of it in the first step).",
             Patterns::Double(0.));
           prm.leave_subsection();
         }

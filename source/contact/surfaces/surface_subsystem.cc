@@ -96,9 +96,13 @@ namespace pneuma
           else
             s << lo << " to " << hi << " Pa/m (" << p.penalty_factor
               << " E t / h^2; Penalty = 0)";
-          s << "; search distance " << contact->search_distance(k) << " m"
-            << (p.search_distance > 0. ? " (given)"
-                                       : " (the largest cell size)");
+          s << "; search distance ";
+          if (p.search_distance > 0.)
+            s << p.search_distance << " m (given)";
+          else
+            s << "4 x the last step's motion, from "
+              << contact->search_distance(k) << " m (a quarter of the "
+              << "largest cell)";
           model.out() << s.str() << std::endl;
         }
     }

@@ -26,7 +26,9 @@
  * dofs are ghosts of every rank; each rank takes the points of its owned
  * cells, so a pair across a partition boundary is found like any other.
  * Candidates are the cells whose current boxes come within the offset
- * plus the search distance of the slave cell's box at the start of a step;
+ * plus the search distance of the slave cell's box at the start of a step
+ * (by default four times the largest motion of the pair's nodes in the
+ * step before, at least twice the thickness, at most a cell's size);
  * the sparsity pattern grows when new couplings appear. A converged state
  * in which a point penetrates a cell that was not its candidate is not
  * accepted (the step is cut back).
@@ -144,7 +146,8 @@ namespace pneuma
       /// The smallest and largest penalty of pair @p k (over the ranks).
       std::pair<double, double>
       penalty_range(const unsigned int k) const;
-      /// The search distance of pair @p k.
+      /// The search distance of pair @p k (the current one: by default
+      /// it follows the motion of the steps, commit()).
       double
       search_distance(const unsigned int k) const
       {
@@ -181,12 +184,16 @@ namespace pneuma
         std::vector<unsigned int>              slaves;
         std::vector<char>                      opposite;
         std::vector<std::vector<unsigned int>> candidates;
-        std::vector<std::vector<signed char>>  orientation;
+        /// Per point and candidate (q * candidates + j): +-1, or 0 until
+        /// first needed (side_of()).
+        mutable std::vector<std::vector<signed char>> orientation;
       };
       struct PairData
       {
         std::vector<Side> sides;
-        double            search = 0.;
+        /// The search distance of the next candidates, and the largest
+        /// cell size (box diagonal) of the pair's regions.
+        double search = 0., largest = 0.;
       };
       /// A point in contact at an assembly, and its terms.
       struct Active
@@ -215,29 +222,44 @@ namespace pneuma
       offset(const unsigned int a, const unsigned int b) const;
       double
       cell_penalty(const unsigned int k, const unsigned int cell) const;
-      /// The nearest projection of the point @p x of slave @p i onto its
-      /// candidates within @p reach of their boxes; returns the
-      /// candidate's position in the list, or -1.
+      /// The cells at a state: patches, boxes, and how far each cell's
+      /// nodes moved since the last accepted state.
+      struct State
+      {
+        std::vector<MasterPatch>                           patches;
+        std::vector<std::pair<Tensor<1, 3>, Tensor<1, 3>>> boxes;
+        std::vector<double>                                motion;
+      };
+      State
+      current_state(const LA::Vector &u) const;
+      /// The side (+-1) point @p q of slave @p i was on, in the last
+      /// accepted state, of its candidate @p j.
+      signed char
+      side_of(const Side        &side,
+              const unsigned int i,
+              const unsigned int q,
+              const unsigned int j) const;
+      /// The nearest projection of the point @p x of slave @p i onto the
+      /// candidates it may touch; returns the candidate's position in the
+      /// list, or -1.
       int
-      nearest(const Side                     &side,
-              const unsigned int              i,
-              const Tensor<1, 3>             &x,
-              const std::vector<MasterPatch> &patches,
-              const double                    reach,
-              Projection                     &projection) const;
+      nearest(const Side         &side,
+              const unsigned int  i,
+              const Tensor<1, 3> &x,
+              const State        &state,
+              Projection         &projection) const;
       /// check() of point @p q of slave @p i of pair @p k.
       template <class Tree>
       std::string
-      check_point(const unsigned int              k,
-                  const Side                     &side,
-                  const unsigned int              i,
-                  const unsigned int              q,
-                  const std::vector<MasterPatch> &patches,
-                  const Tree                     &tree,
-                  const bool                      start) const;
+      check_point(const unsigned int k,
+                  const Side        &side,
+                  const unsigned int i,
+                  const unsigned int q,
+                  const State       &state,
+                  const Tree        &tree,
+                  const bool         start) const;
       std::vector<Active>
-      active_points(const std::vector<MasterPatch> &patches,
-                    SurfaceRecord                  *record) const;
+      active_points(const State &state, SurfaceRecord *record) const;
       /// The reports and per-cell values of the points @p active (summed
       /// over the ranks).
       void
