@@ -3,7 +3,7 @@
 // gas) and 2 inflated to 1 bar gauge and sealed, chamber 2 filled with
 // 5 litres of water and its gas sealed, then the transverse force on
 // chamber 2 at mid-span under displacement control, here to 1 cm (the
-// scene goes to 3 cm). Checks:
+// scene goes to 6 cm, its hull bearing on chamber 1 from 1.3 cm on). Checks:
 //  - equilibrium: the support reactions carry the applied load (weights
 //    of walls and plates, the force F, and the chambers' loads: the gases'
 //    pressures, whose resultant vanishes on a closed chamber, and the
