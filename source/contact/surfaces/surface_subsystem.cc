@@ -119,7 +119,6 @@ namespace pneuma
     SurfaceSubsystem::initialize(const LA::Vector &field, const double)
     {
       throw_if_any(model.mpi_communicator(), contact->check(field, true));
-      contact->commit(&field);
       refresh(field);
     }
 
@@ -152,6 +151,17 @@ namespace pneuma
     void
     SurfaceSubsystem::refresh(const LA::Vector &field)
     {
+      // Every refresh is of an accepted state (a committed step, the end
+      // of a strategy, a restored checkpoint): the sides of the next
+      // step's points are measured in it, so a restart takes them from the
+      // restored state, not from the reference.
+      contact->commit(&field);
+      record(field);
+    }
+
+    void
+    SurfaceSubsystem::record(const LA::Vector &field)
+    {
       contact->assemble(
         field, model.constraints(), nullptr, nullptr, &recorded);
     }
@@ -161,7 +171,6 @@ namespace pneuma
                                   const LA::Vector &field,
                                   const Vector<double> &)
     {
-      contact->commit(&field);
       refresh(field);
     }
 
@@ -201,7 +210,7 @@ namespace pneuma
     void
     SurfaceSubsystem::add_output_fields(const LA::Vector &field, const double)
     {
-      refresh(field);
+      record(field);
       const auto &of = contact->surface_cell_of_active();
       pressure_output.reinit(of.size());
       gap_output.reinit(of.size());

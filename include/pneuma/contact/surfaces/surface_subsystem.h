@@ -70,6 +70,7 @@ namespace pneuma
       /// No point penetrates a cell the step did not test.
       std::string
       check_state(const LA::Vector &field) const override;
+      /// Accept @p field (the sides of the next step) and record it.
       void
       refresh(const LA::Vector &field) override;
       void
@@ -84,6 +85,10 @@ namespace pneuma
       add_output_fields(const LA::Vector &field, const double t) override;
 
     private:
+      /// The reports and per-cell values of the state @p field.
+      void
+      record(const LA::Vector &field);
+
       Model                          &model;
       membrane::MembraneSubsystem    &membrane;
       SurfaceParameters               parameters;
