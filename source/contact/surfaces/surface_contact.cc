@@ -161,8 +161,12 @@ namespace pneuma
                 }
             const MasterPatch patch{degree, cell.reference, 1., {}};
             for (unsigned int q = 0; q < gauss.size(); ++q)
-              cell.area +=
-                gauss.weight(q) * area_element(patch, gauss.point(q));
+              {
+                cell.weights.push_back(gauss.weight(q)
+                                       * area_element(patch, gauss.point(q)));
+                cell.area += cell.weights.back();
+              }
+            cell.half_thickness = 0.5 * materials[cell.material].thickness;
             sorted.emplace_back(key, cell);
           }
       std::stable_sort(sorted.begin(),
@@ -183,8 +187,7 @@ namespace pneuma
           cells.push_back(sorted[i].second);
           if (cells.back().owner == rank)
             cell_of_active[static_cast<unsigned int>(sorted[i].first[3])] = i;
-          thickest =
-            std::max(thickest, materials[cells.back().material].thickness);
+          thickest = std::max(thickest, 2. * cells.back().half_thickness);
         }
     }
 
@@ -296,9 +299,7 @@ namespace pneuma
     double
     SurfaceContact::offset(const unsigned int a, const unsigned int b) const
     {
-      return 0.5
-             * (materials[cells[a].material].thickness
-                + materials[cells[b].material].thickness);
+      return cells[a].half_thickness + cells[b].half_thickness;
     }
 
     double
@@ -513,20 +514,16 @@ namespace pneuma
                     if (gap >= 0.)
                       continue;
                     Active a;
-                    a.pair    = k;
-                    a.side    = s;
-                    a.slave   = c;
-                    a.q       = q;
-                    a.master  = m;
-                    a.xi      = p.xi;
-                    a.gap     = gap;
-                    a.offset  = off;
-                    a.penalty = cell_penalty(k, c);
-                    a.weight =
-                      unit_weights[q]
-                      * area_element(
-                        MasterPatch{degree, cells[c].reference, 1., {}},
-                        points[q]);
+                    a.pair        = k;
+                    a.side        = s;
+                    a.slave       = c;
+                    a.q           = q;
+                    a.master      = m;
+                    a.xi          = p.xi;
+                    a.gap         = gap;
+                    a.offset      = off;
+                    a.penalty     = cell_penalty(k, c);
+                    a.weight      = cells[c].weights[q];
                     a.orientation = o;
                     active.push_back(a);
                   }
@@ -650,13 +647,9 @@ namespace pneuma
           for (unsigned int i = 0; i < 3; ++i)
             f[i] = -a.gradient(i);
           r.force += a.side == 0 ? f : -f;
-          const MasterPatch now = patches[a.slave];
-          const double      J =
-            area_element(now, points[a.q])
-            / area_element(
-              MasterPatch{degree, cells[a.slave].reference, 1., {}},
-              points[a.q]);
-          r.area += 0.5 * J * a.weight;
+          // The point's current area (each side's points count half).
+          r.area += 0.5 * unit_weights[a.q]
+                    * area_element(patches[a.slave], points[a.q]);
           record.cell_force[a.slave] += N;
           record.cell_force[a.master] += N;
         }

@@ -174,8 +174,11 @@ namespace pneuma
         std::vector<types::global_dof_index> dofs;
         std::vector<Tensor<1, 3>>            reference;
         types::material_id                   material = 0;
-        double                               area     = 0.;
-        int                                  owner    = 0;
+        /// Reference area weight of each Gauss point, their sum, and half
+        /// the region's thickness.
+        std::vector<double> weights;
+        double              area = 0., half_thickness = 0.;
+        int                 owner = 0;
       };
       /// One side's slaves of a pair: owned cells, their candidate cells
       /// and per point and candidate the side (+-1) it was on.
