@@ -420,18 +420,32 @@ namespace pneuma
       }
     } // namespace
 
-    void
-    ChamberAssembler::check_chambers() const
+    /// The walls' sums over the mesh (this rank's cells): per chamber its
+    /// oriented area vector, area and volume closed along gravity, per
+    /// region its area and per (chamber, region) its area vector.
+    struct ChamberAssembler::WallSums
     {
-      const auto               &fe = dof_handler->get_fe();
-      const QGauss<2>           quadrature(degree + 1);
-      FEValues<2, 3>            fe_values(*mapping, fe, quadrature, wall_flags);
-      const unsigned int        n = parameters.chambers.size();
-      std::vector<Tensor<1, 3>> sum(n);
-      std::vector<double>       area(n, 0.);
+      std::vector<Tensor<1, 3>>            vector;
+      std::vector<double>                  area, vertical_volume;
       std::map<types::material_id, double> region_area;
       std::map<std::pair<unsigned int, types::material_id>, Tensor<1, 3>>
         region_vector;
+    };
+
+    ChamberAssembler::WallSums
+    ChamberAssembler::wall_sums() const
+    {
+      const QGauss<2>    quadrature(degree + 1);
+      FEValues<2, 3>     fe_values(*mapping,
+                               dof_handler->get_fe(),
+                               quadrature,
+                               wall_flags);
+      const unsigned int n = parameters.chambers.size();
+      WallSums           sums{std::vector<Tensor<1, 3>>(n),
+                    std::vector<double>(n, 0.),
+                    std::vector<double>(n, 0.),
+                    {},
+                    {}};
       for (const auto &cell : dof_handler->active_cell_iterators())
         if (cell->is_locally_owned())
           {
@@ -441,30 +455,83 @@ namespace pneuma
             fe_values.reinit(cell);
             const auto [x, n_mean] = cell_centre_and_normal(fe_values);
             Tensor<1, 3> cell_vector;
-            double       cell_area = 0.;
+            double       cell_area = 0., cell_volume = 0.;
             for (unsigned int q = 0; q < quadrature.size(); ++q)
               {
                 cell_vector += fe_values.normal_vector(q) * fe_values.JxW(q);
                 cell_area += fe_values.JxW(q);
+                // V = -int height (g . n) dA: exact for a chamber closed
+                // along gravity, whatever its vertical cuts.
+                cell_volume -= height(fe_values.quadrature_point(q))
+                               * (unit_gravity * fe_values.normal_vector(q))
+                               * fe_values.JxW(q);
               }
-            region_area[cell->material_id()] += cell_area;
+            sums.region_area[cell->material_id()] += cell_area;
             for (const auto &[c, rs] : walls)
               {
                 const double s =
                   wall_sign(geometry, parameters.chambers[c], rs, x, n_mean);
-                sum[c] += s * cell_vector;
-                area[c] += cell_area;
-                region_vector[{c, cell->material_id()}] += s * cell_vector;
+                sums.vector[c] += s * cell_vector;
+                sums.area[c] += cell_area;
+                sums.vertical_volume[c] += s * cell_volume;
+                sums.region_vector[{c, cell->material_id()}] += s * cell_vector;
               }
           }
+      return sums;
+    }
+
+    std::string
+    ChamberAssembler::closure_error(const unsigned int  c,
+                                    const Tensor<1, 3> &gap,
+                                    const double        total,
+                                    const WallSums     &sums) const
+    {
+      const auto    &def  = parameters.chambers[c];
       const MPI_Comm comm = dof_handler->get_communicator();
+      // Would flipping one wall close it?
+      std::string hint;
+      for (const auto &[id, sign] : def.regions)
+        {
+          Tensor<1, 3> v;
+          const auto   it = sums.region_vector.find({c, id});
+          for (unsigned int d = 0; d < 3; ++d)
+            v[d] = Utilities::MPI::sum(
+              it == sums.region_vector.end() ? 0. : it->second[d], comm);
+          if (!def.open && (gap - 2. * v).norm() <= 1e-8 * total)
+            hint += (hint.empty() ? "" : " or ") + std::to_string(id);
+        }
+      if (!hint.empty())
+        hint = " (flipping region " + hint + " closes it)";
+      std::ostringstream msg;
+      msg << "the oriented walls do not close the chamber: their "
+             "area vectors sum to ("
+          << gap[0] << ", " << gap[1] << ", " << gap[2]
+          << ") m^2, |gap| = " << gap.norm() << " m^2 for " << total
+          << " m^2 of wall. Add the missing regions or flip a wall "
+             "with a minus sign"
+          << (def.open ? " (an open tank may only lack walls "
+                         "parallel to gravity)"
+                       : "")
+          << hint;
+      return msg.str();
+    }
+
+    void
+    ChamberAssembler::check_chambers()
+    {
+      const WallSums     sums = wall_sums();
+      const unsigned int n    = parameters.chambers.size();
+      const MPI_Comm     comm = dof_handler->get_communicator();
+      closed_vertically.assign(n, true);
       for (unsigned int c = 0; c < n; ++c)
         {
           const auto &def = parameters.chambers[c];
           for (const auto &[id, sign] : def.regions)
             {
-              const double a = Utilities::MPI::sum(
-                region_area.count(id) ? region_area.at(id) : 0., comm);
+              const double a = Utilities::MPI::sum(sums.region_area.count(id)
+                                                     ? sums.region_area.at(id)
+                                                     : 0.,
+                                                   comm);
               check_input(a > 0.,
                           def.path + "/Regions",
                           "the mesh has no cells in region "
@@ -472,49 +539,39 @@ namespace pneuma
             }
           Tensor<1, 3> gap;
           for (unsigned int d = 0; d < 3; ++d)
-            gap[d] = Utilities::MPI::sum(sum[c][d], comm);
-          const double total = Utilities::MPI::sum(area[c], comm);
+            gap[d] = Utilities::MPI::sum(sums.vector[c][d], comm);
+          const double total = Utilities::MPI::sum(sums.area[c], comm);
+          // An open tank's missing lid makes its walls face down along
+          // gravity; a chamber that lacks only vertical walls (a slice, a
+          // symmetry cut) is closed along gravity: its sum vanishes.
+          const double down    = gap * unit_gravity;
+          closed_vertically[c] = !def.open || std::abs(down) <= 1e-8 * total;
           if (def.open)
             {
-              check_input(gap * unit_gravity > 0.,
+              check_input(down > 0. || closed_vertically[c],
                           def.path + "/Regions",
                           "the walls of an open tank must face out of the "
                           "liquid, i.e. down along gravity (their area "
                           "vectors sum to "
-                            + std::to_string(gap * unit_gravity)
+                            + std::to_string(down)
                             + " m^2 along gravity); flip them with a minus "
                               "sign");
-              gap -= (gap * unit_gravity) * unit_gravity;
+              gap -= down * unit_gravity;
             }
           if (gap.norm() > 1e-8 * total)
-            {
-              // Would flipping one wall close it?
-              std::string hint;
-              for (const auto &[id, sign] : def.regions)
-                {
-                  Tensor<1, 3> v;
-                  const auto   it = region_vector.find({c, id});
-                  for (unsigned int d = 0; d < 3; ++d)
-                    v[d] = Utilities::MPI::sum(
-                      it == region_vector.end() ? 0. : it->second[d], comm);
-                  if (!def.open && (gap - 2. * v).norm() <= 1e-8 * total)
-                    hint += (hint.empty() ? "" : " or ") + std::to_string(id);
-                }
-              if (!hint.empty())
-                hint = " (flipping region " + hint + " closes it)";
-              std::ostringstream msg;
-              msg << "the oriented walls do not close the chamber: their "
-                     "area vectors sum to ("
-                  << gap[0] << ", " << gap[1] << ", " << gap[2]
-                  << ") m^2, |gap| = " << gap.norm() << " m^2 for " << total
-                  << " m^2 of wall. Add the missing regions or flip a wall "
-                     "with a minus sign"
-                  << (def.open ? " (an open tank may only lack walls "
-                                 "parallel to gravity)"
-                               : "")
-                  << hint;
-              throw InputError(def.path + "/Regions", msg.str());
-            }
+            throw InputError(def.path + "/Regions",
+                             closure_error(c, gap, total, sums));
+          // A slice's flux through its vertical cuts is nil in either
+          // orientation: its volume tells.
+          const double volume =
+            Utilities::MPI::sum(sums.vertical_volume[c], comm);
+          if (def.open && closed_vertically[c])
+            check_input(volume > 0.,
+                        def.path + "/Regions",
+                        "the walls face into the chamber (the volume they "
+                        "close between its vertical cuts is "
+                          + std::to_string(volume)
+                          + " m^3): flip the signs of its regions");
           if (def.open)
             check_input(def.filling == Filling::liquid,
                         def.path + "/Open",

@@ -69,9 +69,14 @@ namespace pneuma
                             Patterns::Anything());
           prm.add_parameter("Open",
                             def.open,
-                            "A tank: the listed walls are closed by rigid "
-                            "walls parallel to gravity that are not meshed "
-                            "(liquid fillings only).");
+                            "The listed walls are closed by rigid walls "
+                            "parallel to gravity that are not meshed "
+                            "(liquid fillings only): a tank open at its top, "
+                            "or a slice of a long tube between two vertical "
+                            "cuts (plane strain) or a body cut by vertical "
+                            "symmetry planes, whose own walls close it above "
+                            "and below; a level above such a one's top "
+                            "fills it and presses it by the head.");
           add_selection(prm,
                         "Filling",
                         def.filling,

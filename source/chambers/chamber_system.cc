@@ -328,10 +328,13 @@ namespace pneuma
       // Whether the volume fits is known without V(hi) when the search
       // converges below the top (V grows with h); V(hi) is needed for an
       // open chamber's bracket, and near or at the top.
-      double     V_hi       = 0.;
+      double V_hi = 0.;
+      // A tank open at its top takes any volume; a chamber closed along
+      // gravity (every closed one, an open slice) holds V(top).
+      const bool tank       = !assembler.closed_along_gravity(g.leader);
       const auto fits_below = [&]() -> std::string {
         V_hi = volume(hi).first;
-        if (def.open || V_hi * (1. - 1e-9) > target)
+        if (tank || V_hi * (1. - 1e-9) > target)
           return "";
         std::ostringstream msg;
         msg << def.path << ": the liquid volume " << target
@@ -340,7 +343,7 @@ namespace pneuma
             << (def.has_gas() ? " and its gas needs room" : "");
         return msg.str();
       };
-      if (def.open)
+      if (tank)
         {
           V_hi = volume(hi).first;
           for (double step = std::max(hi - lo, 1e-3); V_hi < target; step *= 2.)
@@ -351,7 +354,7 @@ namespace pneuma
         }
       const auto [h, converged] = search_level(
         volume, target, (g.h > lo && g.h < hi) ? g.h : 0.5 * (lo + hi), lo, hi);
-      if (!def.open && (!converged || hi - h <= 1e-6 * (hi - lo)))
+      if (!tank && (!converged || hi - h <= 1e-6 * (hi - lo)))
         {
           const std::string error = fits_below();
           if (!error.empty())
@@ -724,10 +727,10 @@ namespace pneuma
           for (const auto c : g.members)
             {
               ChamberReport &r = chamber_reports[c];
-              r.volume         = parameters.chambers[c].open ? 0. : m[c].volume;
-              r.liquid_volume  = m[c].liquid_volume;
-              r.gas_volume     = g.gas ? m[c].volume - m[c].liquid_volume : 0.;
-              r.wetted_area    = m[c].wetted_area;
+              r.volume = assembler.closed_along_gravity(c) ? m[c].volume : 0.;
+              r.liquid_volume = m[c].liquid_volume;
+              r.gas_volume    = g.gas ? m[c].volume - m[c].liquid_volume : 0.;
+              r.wetted_area   = m[c].wetted_area;
               if (g.liquid)
                 r.level = g.h;
               if (g.gas)

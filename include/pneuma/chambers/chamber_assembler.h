@@ -102,11 +102,27 @@ namespace pneuma
       /**
        * Check every chamber before any work: its regions exist, and its
        * oriented walls close (the area vectors sum to zero; for an open
-       * tank, their part normal to gravity). Throws InputError naming the
-       * chamber and the gap.
+       * tank, their part normal to gravity, and the rest points down
+       * along gravity or vanishes). Throws InputError naming the chamber
+       * and the gap. Records which chambers are closed along gravity.
        */
       void
-      check_chambers() const;
+      check_chambers();
+
+      /**
+       * Whether the walls of chamber @p c close it along gravity (set by
+       * check_chambers()): every closed chamber, and an open one that
+       * lacks only walls parallel to gravity on all sides, such as a slice
+       * of a long tube between two vertical cuts (plane strain) or a body
+       * cut by vertical symmetry planes. Such a chamber holds a finite
+       * volume; a level above its top fills it and presses it by the
+       * head. False for a tank open at its top.
+       */
+      bool
+      closed_along_gravity(const unsigned int c) const
+      {
+        return c < closed_vertically.size() && closed_vertically[c];
+      }
 
       /**
        * At the ghosted displacement @p u: subtract the loads @p loads from
@@ -276,6 +292,18 @@ namespace pneuma
       }
 
     private:
+      /// Per chamber: closed_along_gravity().
+      std::vector<bool> closed_vertically;
+      struct WallSums;
+      /// The walls' sums over this rank's cells (check_chambers()).
+      WallSums
+      wall_sums() const;
+      /// The message for chamber @p c whose walls leave @p gap open.
+      std::string
+      closure_error(const unsigned int  c,
+                    const Tensor<1, 3> &gap,
+                    const double        total,
+                    const WallSums     &sums) const;
       /// Chambers (and orientation) a cell of material @p id belongs to.
       const std::vector<std::pair<unsigned int, int>> &
       walls_of(const types::material_id id) const;
