@@ -181,6 +181,9 @@ check "$dir/valid.prm" 1 "truncated.msh': ends before the last node" "${g[@]}" -
 check "$dir/valid.prm" 1 "not_a_mesh.msh': is not a Gmsh mesh" "${g[@]}" --set "Geometry/gmsh/Mesh file=$dir/not_a_mesh.msh"
 check "$dir/valid.prm" 1 "unknown_node.msh': an element refers to the unknown node 9" "${g[@]}" --set "Geometry/gmsh/Mesh file=$dir/unknown_node.msh"
 w="$dir/../../parameter_files/waterbeam_filling.prm"
+# Friction that is not a number of the allowed range.
+check "$dir/../../parameter_files/sheet_dragged.prm" 1 "Obstacles/Obstacle 1/Friction coefficient" --set "Obstacles/Obstacle 1/Friction coefficient=-0.3"
+check "$dir/../../parameter_files/sheet_dragged.prm" 1 "Obstacles/Obstacle 1/Tangential penalty" --set "Obstacles/Obstacle 1/Tangential penalty=abc"
 # An open chamber closed along gravity (a slice) whose wall faces in.
 check "$dir/../../parameter_files/geotube.prm" 1 "Chambers/Chamber 1/Regions: the walls face into the chamber (the volume they close between its vertical cuts is -0.007958 m^3)" --set "Geometry/gmsh/Mesh file=$dir/../../meshes/geotube_slice.msh" --set "Chambers/Chamber 1/Regions=-1"
 # Numbers that are not finite at the start are bad input.

@@ -10,7 +10,8 @@
 # square airbag stops after its relaxed first stage and restarts into the
 # static one (the relaxation's counts come back with the checkpoint). The
 # vibrating membrane stops in its explicit stage and continues with the
-# checkpoint's velocity, step and energies.
+# checkpoint's velocity, step and energies. The dragged sheet stops while
+# it slides and continues with the checkpoint's friction anchors.
 # Usage: check_restart.sh PNEUMA_BINARY SOURCE_DIR [PYTHON]
 pneuma="$1" src="$2" python="${3:-/usr/bin/python3}"
 compare="$python $src/tests/compare_summaries.py"
@@ -45,7 +46,9 @@ for case in \
   "contact_patch 2 2 1 $src/tests/contact_patch_mpi.prm" \
   "sphere_arc_length 1 1 6 $src/parameter_files/sphere_arc_length.prm" \
   "membrane_vibration 1 1 50 $src/parameter_files/membrane_vibration.prm" \
-  "membrane_vibration 2 2 50 $src/parameter_files/membrane_vibration.prm"; do
+  "membrane_vibration 2 2 50 $src/parameter_files/membrane_vibration.prm" \
+  "sheet_dragged 1 1 6 $src/parameter_files/sheet_dragged.prm" \
+  "sheet_dragged 2 1 6 $src/parameter_files/sheet_dragged.prm"; do
   set -- $case
   name="$1" first="$2" second="$3" stop="$4" prm="$5"
   full="$name-$first-full" part="$name-$first-$second-restart"

@@ -90,6 +90,87 @@ namespace pneuma
                   (*matrix)(dof[a][c], dof[b][e]) += NN * D[c][e];
             }
       }
+
+      /// The friction traction of one point and whether it slips.
+      struct Traction
+      {
+        Tensor<1, 3> t;
+        bool         slip = false;
+        /// At Coulomb's limit (to round-off): slipping, or an accepted
+        /// slip whose anchor was just dragged.
+        bool at_limit = false;
+      };
+
+      /**
+       * Coulomb friction of one point in contact (doc/theory.md §19): at
+       * @p x_rel = x - d with its @p anchor, nominal pressure @p p, normal
+       * and tangential penalties @p eps, @p eps_t and coefficient @p mu,
+       * the traction t on the membrane; -t N_a into @p residual and
+       * -N_a N_b dt/dx into @p matrix (either may be nullptr).
+       */
+      Traction
+      add_friction_terms(const SignedDistance &s,
+                         const Tensor<1, 3>   &x_rel,
+                         const Tensor<1, 3>   &anchor,
+                         const double          p,
+                         const double          eps,
+                         const double          eps_t,
+                         const double          mu,
+                         const double         *N,
+                         const double          w,
+                         const unsigned int    n,
+                         const NodeDofs       &dof,
+                         FullMatrix<double>   *matrix,
+                         Vector<double>       *residual)
+      {
+        const Tensor<1, 3> v    = x_rel - anchor;
+        const double       vn   = v * s.normal;
+        const Tensor<1, 3> t_tr = -eps_t * (v - vn * s.normal);
+        const double       norm = t_tr.norm();
+        Traction           r;
+        r.slip     = norm > mu * p;
+        r.at_limit = norm >= mu * p * (1. - 1e-9);
+        r.t        = r.slip ? (mu * p / norm) * t_tr : t_tr;
+        if (residual != nullptr)
+          for (unsigned int a = 0; a < n; ++a)
+            for (unsigned int c = 0; c < 3; ++c)
+              (*residual)[dof[a][c]] -= r.t[c] * N[a] * w;
+        if (matrix == nullptr)
+          return r;
+        // d t_tr/dx = -eps_t (P - (v.n) H - n (H v)^T), H = d n/dx.
+        const Tensor<1, 3> Hv = s.hessian * v;
+        Tensor<2, 3>       D;
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = 0; j < 3; ++j)
+            D[i][j] = -eps_t
+                      * ((i == j ? 1. : 0.) - s.normal[i] * s.normal[j]
+                         - vn * s.hessian[i][j] - s.normal[i] * Hv[j]);
+        if (r.slip)
+          {
+            // t = mu p e, e = t_tr/|t_tr|, dp/dx = -eps n.
+            const Tensor<1, 3> e = t_tr / norm;
+            Tensor<2, 3>       slip;
+            for (unsigned int i = 0; i < 3; ++i)
+              for (unsigned int j = 0; j < 3; ++j)
+                {
+                  double projected = 0.;
+                  for (unsigned int k = 0; k < 3; ++k)
+                    projected += ((i == k ? 1. : 0.) - e[i] * e[k]) * D[k][j];
+                  slip[i][j] =
+                    -mu * eps * e[i] * s.normal[j] + mu * p / norm * projected;
+                }
+            D = slip;
+          }
+        for (unsigned int a = 0; a < n; ++a)
+          for (unsigned int b = 0; b < n; ++b)
+            {
+              const double NN = N[a] * N[b] * w;
+              for (unsigned int c = 0; c < 3; ++c)
+                for (unsigned int e = 0; e < 3; ++e)
+                  (*matrix)(dof[a][c], dof[b][e]) -= NN * D[c][e];
+            }
+        return r;
+      }
     } // namespace
 
     void
@@ -100,6 +181,17 @@ namespace pneuma
       area += other.area;
       penetration = std::max(penetration, other.penetration);
       points += other.points;
+      friction_force += other.friction_force;
+      slip_points += other.slip_points;
+    }
+
+    bool
+    ObstacleContact::has_friction() const
+    {
+      for (const auto &def : obstacles)
+        if (def.friction > 0.)
+          return true;
+      return false;
     }
 
     ObstacleContact::ObstacleContact(
@@ -146,7 +238,9 @@ namespace pneuma
                           Vector<double>                    *residual,
                           std::vector<ObstacleSums>         &sums,
                           const bool                         with_area,
-                          ObstacleCellOutput                *output) const
+                          ObstacleCellOutput                *output,
+                          const PointFriction               *anchors,
+                          PointFriction                     *accepted) const
     {
       const unsigned int n_q = reference.n_q_points(), n = reference.n_nodes();
       const NodeDofs     dof  = node_dofs(reference);
@@ -170,8 +264,12 @@ namespace pneuma
           current_area += J * w;
           for (unsigned int k = 0; k < obstacles.size(); ++k)
             {
+              const unsigned int qk = q * obstacles.size() + k;
+              if (accepted != nullptr)
+                accepted[qk] = PointFriction();
+              const Tensor<1, 3>   x_rel = x - translations[k];
               const SignedDistance s =
-                obstacles[k].shape->distance(x - translations[k]);
+                obstacles[k].shape->distance(Point<3>(x_rel));
               const double g = s.phi - offset;
               if (output != nullptr)
                 output->gap = std::min(output->gap, g);
@@ -187,6 +285,40 @@ namespace pneuma
                 sum.area += J * w;
               force += p * w;
               add_point_terms(s, g, eps[k], N, w, n, dof, matrix, residual);
+              const auto &def = obstacles[k];
+              if (anchors == nullptr || def.friction == 0.)
+                continue;
+              const double eps_t =
+                def.tangential_penalty > 0. ? def.tangential_penalty : eps[k];
+              const PointFriction &f = anchors[qk];
+              Traction             r;
+              if (f.active)
+                {
+                  r = add_friction_terms(s,
+                                         x_rel,
+                                         f.anchor,
+                                         p,
+                                         eps[k],
+                                         eps_t,
+                                         def.friction,
+                                         N,
+                                         w,
+                                         n,
+                                         dof,
+                                         matrix,
+                                         residual);
+                  sum.force -= w * r.t;
+                  sum.friction_force += r.t.norm() * w;
+                  sum.slip_points += r.at_limit ? 1 : 0;
+                }
+              // Accepted: a sticking point keeps its anchor, a slipping
+              // one is dragged to where its traction is mu p, a new one
+              // sticks where it is.
+              if (accepted != nullptr)
+                accepted[qk] = {!f.active ? x_rel
+                                : r.slip  ? x_rel + r.t / eps_t
+                                          : f.anchor,
+                                true};
             }
         }
       if (output != nullptr && current_area > 0.)

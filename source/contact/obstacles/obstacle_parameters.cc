@@ -62,6 +62,20 @@ namespace pneuma
                             def.penalty_factor,
                             "f of the derived penalty (Penalty = 0).",
                             Patterns::Double(0.));
+          prm.add_parameter(
+            "Friction coefficient",
+            def.friction,
+            "Coulomb's mu between the membrane and the obstacle (0: "
+            "frictionless). A point sticks while its tangential traction, "
+            "elastic with the Tangential penalty, stays below mu times its "
+            "contact pressure, and slips beyond.",
+            Patterns::Double(0.));
+          prm.add_parameter("Tangential penalty",
+                            def.tangential_penalty,
+                            "Tangential traction per elastic slip [Pa/m] "
+                            "while a point sticks. 0: the cell's normal "
+                            "penalty.",
+                            Patterns::Double(0.));
           loads::declare_function(prm, "Displacement", 3, "0; 0; 0");
           t.shapes = shapes.declare_all(prm);
           prm.leave_subsection();
@@ -90,6 +104,12 @@ namespace pneuma
                             && std::isfinite(def.penalty_factor)),
                       def.path + "/Penalty factor",
                       "must be positive and finite when Penalty is 0");
+          check_input(std::isfinite(def.friction),
+                      def.path + "/Friction coefficient",
+                      "must be finite");
+          check_input(std::isfinite(def.tangential_penalty),
+                      def.path + "/Tangential penalty",
+                      "must be finite");
           def.displacement = std::make_unique<Functions::ParsedFunction<3>>(3);
           loads::parse_function(prm,
                                 *def.displacement,

@@ -1,12 +1,14 @@
 #include <deal.II/base/mpi.h>
 
 #include <pneuma/contact/obstacles/obstacle_subsystem.h>
+#include <pneuma/core/checkpoint.h>
 #include <pneuma/core/collective_error.h>
 #include <pneuma/core/input_error.h>
 #include <pneuma/core/input_layout.h>
 #include <pneuma/core/model.h>
 
 #include <iomanip>
+#include <map>
 #include <sstream>
 
 namespace pneuma
@@ -166,7 +168,7 @@ namespace pneuma
             std::vector<ObstacleSums> part(contact->size());
             contact->cell(cell->material_id(),
                           reference,
-                          c++,
+                          c,
                           local_u,
                           translations,
                           nullptr,
@@ -174,7 +176,9 @@ namespace pneuma
                           part,
                           true,
                           cells ? &(*cells)[cell->active_cell_index()]
-                                : nullptr);
+                                : nullptr,
+                          friction_of(c));
+            ++c;
             for (unsigned int k = 0; k < total.size(); ++k)
               total[k].add(part[k]);
           }
@@ -224,12 +228,161 @@ namespace pneuma
             ++c;
           }
       throw_if_any(model.mpi_communicator(), found);
+      // Points in contact at the start stick where they are.
+      if (contact->has_friction())
+        accept_friction(field, t);
     }
 
     void
     ObstacleSubsystem::begin(const Assembly &a)
     {
       assembly_translations = contact->translations(a.time);
+      if (!contact->has_friction())
+        return;
+      // Friction's tangent is not symmetric (slip; stick on a curved
+      // obstacle).
+      if (a.symmetric != nullptr)
+        *a.symmetric = false;
+      // A model assembled before any initialize() (a tangent check) sticks
+      // where the reference state touches, as a run does; a new mesh
+      // starts without anchors.
+      if (anchors.empty() && a.field != nullptr)
+        {
+          LA::Vector reference(*a.field);
+          reference = 0.;
+          accept_friction(reference, a.time);
+        }
+      const std::size_t size =
+        membrane.reference_geometry().n_cells() * friction_stride();
+      if (anchors.size() != size)
+        anchors.assign(size, PointFriction());
+    }
+
+    unsigned int
+    ObstacleSubsystem::friction_stride() const
+    {
+      return membrane.reference_geometry().n_q_points() * contact->size();
+    }
+
+    const PointFriction *
+    ObstacleSubsystem::friction_of(const unsigned int c) const
+    {
+      const std::size_t first = std::size_t(c) * friction_stride();
+      if (!contact->has_friction()
+          || first + friction_stride() > anchors.size())
+        return nullptr;
+      return anchors.data() + first;
+    }
+
+    void
+    ObstacleSubsystem::commit_step(const double      t,
+                                   const LA::Vector &field,
+                                   const Vector<double> &)
+    {
+      if (!anchors.empty())
+        accept_friction(field, t);
+    }
+
+    void
+    ObstacleSubsystem::accept_friction(const LA::Vector &field, const double t)
+    {
+      const std::size_t size =
+        membrane.reference_geometry().n_cells() * friction_stride();
+      if (anchors.size() != size)
+        anchors.assign(size, PointFriction());
+      const auto                &reference    = membrane.reference_geometry();
+      const auto                 translations = contact->translations(t);
+      std::vector<PointFriction> accepted(anchors.size());
+      std::vector<ObstacleSums>  unused(contact->size());
+      std::vector<double>        local_u;
+      unsigned int               c = 0;
+      for (const auto &cell : membrane.dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cell_values(field, c, local_u);
+            contact->cell(cell->material_id(),
+                          reference,
+                          c,
+                          local_u,
+                          translations,
+                          nullptr,
+                          nullptr,
+                          unused,
+                          false,
+                          nullptr,
+                          friction_of(c),
+                          accepted.data() + std::size_t(c) * friction_stride());
+            ++c;
+          }
+      anchors.swap(accepted);
+    }
+
+    void
+    ObstacleSubsystem::save_checkpoint(
+      Checkpoint &checkpoint,
+      const std::vector<const LA::Vector *> &) const
+    {
+      if (!contact->has_friction())
+        return;
+      // Per owned cell: its id and, per point and obstacle, the flag and
+      // the anchor; gathered on rank 0, which writes.
+      using Entry = std::pair<std::string, std::vector<double>>;
+      std::vector<Entry> local;
+      unsigned int       c = 0;
+      for (const auto &cell : membrane.dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            Entry       e{cell->id().to_string(), {}};
+            const auto *f = friction_of(c++);
+            for (unsigned int i = 0; f != nullptr && i < friction_stride(); ++i)
+              e.second.insert(e.second.end(),
+                              {f[i].active ? 1. : 0.,
+                               f[i].anchor[0],
+                               f[i].anchor[1],
+                               f[i].anchor[2]});
+            local.push_back(e);
+          }
+      std::vector<Entry> all;
+      for (const auto &part :
+           Utilities::MPI::gather(model.mpi_communicator(), local, 0))
+        all.insert(all.end(), part.begin(), part.end());
+      checkpoint.put("obstacles/anchors", all);
+    }
+
+    void
+    ObstacleSubsystem::load_checkpoint(const Checkpoint &checkpoint,
+                                       const std::vector<LA::Vector *> &)
+    {
+      if (!contact->has_friction())
+        return;
+      using Entry = std::pair<std::string, std::vector<double>>;
+      std::map<std::string, std::vector<double>> saved;
+      for (auto &[id, values] :
+           checkpoint.get<std::vector<Entry>>("obstacles/anchors"))
+        saved[id] = values;
+      const unsigned int stride = friction_stride();
+      anchors.assign(membrane.reference_geometry().n_cells() * stride,
+                     PointFriction());
+      unsigned int c = 0;
+      for (const auto &cell : membrane.dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const auto it = saved.find(cell->id().to_string());
+            if (it != saved.end() && !it->second.empty())
+              {
+                check_input(it->second.size() == 4 * stride,
+                            "--restart " + checkpoint.directory(),
+                            "the checkpoint's friction state has another "
+                            "number of points or obstacles");
+                for (unsigned int i = 0; i < stride; ++i)
+                  anchors[std::size_t(c) * stride + i] = {
+                    Tensor<1, 3>({it->second[4 * i + 1],
+                                  it->second[4 * i + 2],
+                                  it->second[4 * i + 3]}),
+                    it->second[4 * i] != 0.};
+              }
+            ++c;
+          }
     }
 
     std::unique_ptr<membrane::CellTerms::Scratch>
@@ -265,7 +418,9 @@ namespace pneuma
                     cell_matrix,
                     cell_residual,
                     sums,
-                    false);
+                    false,
+                    nullptr,
+                    friction_of(cell_index));
     }
 
     void
@@ -304,7 +459,9 @@ namespace pneuma
                           nullptr,
                           &cell_residual,
                           unused,
-                          false);
+                          false,
+                          nullptr,
+                          friction_of(c));
             const auto *d = reference.dof_indices(c++);
             dofs.assign(d, d + dofs.size());
             constraints.distribute_local_to_global(cell_residual, dofs, part);
@@ -342,6 +499,13 @@ namespace pneuma
             g, "energy", "J", s.energy, Statistics::report, R::sum);
           statistics.add_count(
             g, "contact_points", s.points, Statistics::report, R::sum);
+          if (parameters.obstacles[k].friction > 0.)
+            {
+              statistics.add(
+                g, "friction_force", "N", s.friction_force, all, R::sum);
+              statistics.add_count(
+                g, "slip_points", s.slip_points, Statistics::report, R::sum);
+            }
           if (statistics.is_summary())
             {
               statistics.add(

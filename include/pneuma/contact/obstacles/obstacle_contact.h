@@ -23,6 +23,16 @@
  * p is p h^2/(f E t): it falls with the mesh as h^2, like the geometric
  * error of the discrete surface, and stays below it for f = 10 at the
  * membrane strains of inflated structures.
+ *
+ * Coulomb friction (doc/theory.md §19, "Friction"): a point in contact
+ * keeps an anchor xi on the obstacle (in its reference position) from
+ * the last accepted state; the trial traction on the membrane is
+ * \f$t^{tr} = -\epsilon_T P (x - d - \xi)\f$ with P = I - n n, and the
+ * traction \f$t = t^{tr}\f$ while \f$|t^{tr}| \le \mu p\f$ (stick),
+ * else \f$t = \mu p\, t^{tr}/|t^{tr}|\f$ (slip), p the nominal contact
+ * pressure. Its tangent is exact and not symmetric. A point takes its
+ * anchor where it is in contact in an accepted state: the step in which
+ * it first touches is frictionless for it.
  */
 
 #include <deal.II/base/tensor.h>
@@ -56,10 +66,23 @@ namespace pneuma
       double penetration = 0.;
       /// Points in contact.
       unsigned int points = 0;
+      /// Friction: the sum of |t| w [N] and the points at Coulomb's limit
+      /// (slipping).
+      double       friction_force = 0.;
+      unsigned int slip_points    = 0;
 
       /// Add @p other (sums, and the larger penetration).
       void
       add(const ObstacleSums &other);
+    };
+
+    /// The friction state of one point against one obstacle.
+    struct PointFriction
+    {
+      /// The stick position on the obstacle in its reference position.
+      Tensor<1, 3> anchor;
+      /// Whether the point has an anchor (it was in contact).
+      bool active = false;
     };
 
     /// Per-cell values for output.
@@ -106,8 +129,11 @@ namespace pneuma
        * at @p translations: add the residual and
        * tangent to @p residual and @p matrix (either may be nullptr), the
        * sums per obstacle to @p sums (one per obstacle; the areas only if
-       * @p with_area) and, if given, the cell's output values. May run
-       * concurrently on other cells.
+       * @p with_area) and, if given, the cell's output values. With
+       * friction, @p anchors holds the cell's friction state (point q,
+       * obstacle k at q * size() + k; nullptr: frictionless), and
+       * @p accepted, if given, receives the state this one leaves when it
+       * is accepted. May run concurrently on other cells.
        */
       void
       cell(const types::material_id           id,
@@ -119,7 +145,13 @@ namespace pneuma
            Vector<double>                    *residual,
            std::vector<ObstacleSums>         &sums,
            const bool                         with_area,
-           ObstacleCellOutput                *output = nullptr) const;
+           ObstacleCellOutput                *output   = nullptr,
+           const PointFriction               *anchors  = nullptr,
+           PointFriction                     *accepted = nullptr) const;
+
+      /// Does any obstacle have friction?
+      bool
+      has_friction() const;
 
       /// Number of obstacles.
       unsigned int

@@ -45,6 +45,10 @@ namespace pneuma
       double penalty = 0.;
       /// Entry "Penalty factor" f of the derived penalty f E t / h^2.
       double penalty_factor = 10.;
+      /// Entry "Friction coefficient" mu (0: frictionless).
+      double friction = 0.;
+      /// Entry "Tangential penalty" [Pa/m] (0: the normal penalty).
+      double tangential_penalty = 0.;
       /// "Displacement": the obstacle's rigid translation d(t) [m].
       std::unique_ptr<Functions::ParsedFunction<3>> displacement;
 

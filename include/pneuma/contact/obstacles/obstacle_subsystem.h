@@ -30,6 +30,7 @@ namespace pneuma
     class ObstacleSubsystem : public Subsystem,
                               public membrane::CellTerms,
                               public OutputFiles,
+                              public Checkpointed,
                               public Holds
     {
     public:
@@ -65,10 +66,23 @@ namespace pneuma
       {
         // The terms are assembled in the membrane's cell loop.
       }
+      /// With friction: the anchors of the accepted state at @p t.
+      void
+      commit_step(const double          t,
+                  const LA::Vector     &field,
+                  const Vector<double> &border) override;
       void
       add_statistics(Statistics       &statistics,
                      const LA::Vector &field,
                      const double      t) const override;
+      /// With friction: the anchors (section "obstacles/anchors", by cell
+      /// id); without, nothing.
+      void
+      save_checkpoint(Checkpoint &checkpoint,
+                      const std::vector<const LA::Vector *> &) const override;
+      void
+      load_checkpoint(const Checkpoint &checkpoint,
+                      const std::vector<LA::Vector *> &) override;
       void
       add_output_fields(const LA::Vector &field, const double t) override;
 
@@ -120,6 +134,16 @@ namespace pneuma
                   const unsigned int   cell_index,
                   std::vector<double> &local_u) const;
 
+      /// The friction state that the state @p field at @p t leaves.
+      void
+      accept_friction(const LA::Vector &field, const double t);
+      /// The friction state of the owned cell @p c (nullptr: none kept).
+      const PointFriction *
+      friction_of(const unsigned int c) const;
+      /// Entries of the friction state per cell (points x obstacles).
+      unsigned int
+      friction_stride() const;
+
       Model                           &model;
       membrane::MembraneSubsystem     &membrane;
       ObstacleParameters               parameters;
@@ -127,6 +151,10 @@ namespace pneuma
       /// The obstacles' translations at the time of the assembly.
       std::vector<Tensor<1, 3>> assembly_translations;
       Vector<float>             pressure_output, gap_output;
+      /// With friction: per owned cell, point and obstacle, the state of
+      /// the last accepted step (sized at the first assembly on a mesh; a
+      /// new mesh starts without anchors).
+      std::vector<PointFriction> anchors;
     };
   } // namespace contact
 } // namespace pneuma
