@@ -252,11 +252,7 @@ main(int argc, char **argv)
                              / t,
                            1.,
                            1e-2);
-  const auto &r     = s.last_residual_history;
-  double      order = 0.;
-  for (unsigned int k = 1; k + 1 < r.size(); ++k)
-    if (r[k + 1] / r[0] > 1e-12 && r[k] / r[0] < 1e-1)
-      order = std::log(r[k + 1] / r[0]) / std::log(r[k] / r[0]);
+  const double order = pneuma_test::last_step_order(s);
   if (root())
     std::printf("Newton's rate in the last step: %s\n",
                 order > 1.4 ? "superlinear (> 1.4)" : "FAIL");

@@ -288,4 +288,18 @@ namespace pneuma_test
       sum += std::pow(r[c] + f[c], 2);
     return std::sqrt(sum) / std::abs(f[2]);
   }
+
+  /// Newton's observed order in the last step of a run: log(r_{k+1}/r_0)
+  /// / log(r_k/r_0) at its last pair of iterations between 1e-1 and 1e-12
+  /// of the first residual (0 if there is none).
+  inline double
+  last_step_order(const pneuma::RunResult &s)
+  {
+    const auto &r     = s.last_residual_history;
+    double      order = 0.;
+    for (unsigned int k = 1; k + 1 < r.size(); ++k)
+      if (r[k + 1] / r[0] > 1e-12 && r[k] / r[0] < 1e-1)
+        order = std::log(r[k + 1] / r[0]) / std::log(r[k] / r[0]);
+    return order;
+  }
 } // namespace pneuma_test
