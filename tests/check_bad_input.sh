@@ -241,6 +241,14 @@ check "$dir/valid.prm"              1 "Shape" "${o[@]}" --set "Obstacles/Obstacl
 check "$dir/valid.prm"              1 "Obstacle 2" "${o[@]}" --set "Obstacles/Obstacle 2/Penalty=1"
 check "$dir/valid.prm"              1 "Obstacles/Obstacle 1: the membrane starts inside the obstacle" --set "Obstacles/Number of obstacles=1"
 check_mpi "$dir/valid.prm"          1 "Obstacles/Obstacle 1: the membrane starts inside the obstacle" --set "Obstacles/Number of obstacles=1"
+# Rigid bodies from Gmsh: a missing file, one without surface cells, a
+# surface that is not a manifold (the waterbeam's junction lines), and a
+# body the membrane starts in (the slab through the square at z = 0).
+g=(--set "Obstacles/Number of obstacles=1" --set "Obstacles/Obstacle 1/Shape=gmsh")
+check "$dir/valid.prm"              1 "Obstacles/Obstacle 1/gmsh/Mesh file: cannot open the mesh file 'no_such.msh'" "${g[@]}" --set "Obstacles/Obstacle 1/gmsh/Mesh file=no_such.msh"
+check "$dir/valid.prm"              1 "catenary_line.msh' holds no triangles or quadrilaterals" "${g[@]}" --set "Obstacles/Obstacle 1/gmsh/Mesh file=$dir/../../meshes/catenary_line.msh"
+check "$dir/valid.prm"              1 "triangles; a rigid surface must be a manifold" "${g[@]}" --set "Obstacles/Obstacle 1/gmsh/Mesh file=$dir/../../meshes/waterbeam.msh"
+check_mpi "$dir/valid.prm"          1 "Obstacles/Obstacle 1: the membrane starts inside the obstacle" "${g[@]}" --set "Obstacles/Obstacle 1/gmsh/Mesh file=$dir/../../meshes/obstacle_slab.msh" --set "Obstacles/Obstacle 1/Displacement/Function expression=0; 0; -0.05"
 # Membrane-to-membrane contact: regions, penalties, and membranes that
 # overlap at the start (meshes/two_sheets.msh: 0.5 mm apart, t = 1 mm).
 surface=(--set "Surface contact/Number of pairs=1")

@@ -126,8 +126,10 @@ namespace pneuma
       /// Collects the elements of both formats into SurfaceMeshData.
       struct Collector
       {
-        MshParser                             &parser;
-        SurfaceMeshData                       &data;
+        MshParser       &parser;
+        SurfaceMeshData &data;
+        /// Keep triangles (a rigid surface) instead of failing on them.
+        bool                                   triangles;
         std::unordered_map<long, unsigned int> node_index;
         /// Gmsh element tag of every cell, and the "warp" vectors by tag.
         std::vector<long>                      cell_tags;
@@ -167,6 +169,12 @@ namespace pneuma
               l.boundary_id = static_cast<types::boundary_id>(tag);
               data.tagged_lines.push_back(l);
             }
+          else if (type == gmsh_triangle && triangles)
+            data.triangles.push_back(
+              {{vertex(nodes[0]), vertex(nodes[1]), vertex(nodes[2])}});
+          else if (type == gmsh_triangle6 && triangles)
+            parser.fail("holds second-order triangles; save a first-order "
+                        "mesh");
           else if (type == gmsh_triangle || type == gmsh_triangle6)
             parser.fail("holds triangles; pneuma needs quadrilaterals "
                         "(Gmsh: Recombine Surface, or Mesh.RecombineAll = 1)");
@@ -368,7 +376,9 @@ namespace pneuma
     } // namespace
 
     SurfaceMeshData
-    read_gmsh_surface(const std::string &file, const std::string &parameter)
+    read_gmsh_surface(const std::string &file,
+                      const std::string &parameter,
+                      const bool         triangles)
     {
       MshParser   parser(file, parameter);
       std::string section;
@@ -382,7 +392,7 @@ namespace pneuma
                     "(gmsh -save -format msh22, or msh41)");
 
       SurfaceMeshData data;
-      Collector       collector{parser, data, {}};
+      Collector       collector{parser, data, triangles, {}, {}, {}, 0};
       if (version >= 2. && version < 3.)
         read_version_2(parser, collector);
       else if (version >= 4. && version < 5.)

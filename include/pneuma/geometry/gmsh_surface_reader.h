@@ -22,6 +22,7 @@
 #include <deal.II/grid/tria_description.h>
 
 #include <algorithm>
+#include <array>
 #include <string>
 #include <utility>
 #include <vector>
@@ -38,6 +39,9 @@ namespace pneuma
       std::vector<Point<3>> vertices;
       /// Quadrilaterals with vertices in deal.II (lexicographic) order.
       std::vector<CellData<2>> cells;
+      /// Triangles in Gmsh's (counter-clockwise) order, when read with
+      /// triangles allowed (a rigid obstacle's surface).
+      std::vector<std::array<unsigned int, 3>> triangles;
       /// Lines with a physical curve tag, as boundary ids.
       std::vector<CellData<1>> tagged_lines;
       /// Per cell: the vector of the $ElementData view named "warp" for
@@ -69,13 +73,16 @@ namespace pneuma
     }
 
     /**
-     * Read the quadrilaterals and tagged lines of the Gmsh file @p file.
-     * Throws an InputError naming @p parameter and the file when the file is
-     * missing, binary, of an unknown version, truncated, or holds
-     * triangles or higher-order cells.
+     * Read the quadrilaterals and tagged lines of the Gmsh file @p file
+     * (and its triangles if @p triangles). Throws an InputError naming
+     * @p parameter and the file when the file is missing, binary, of an
+     * unknown version, truncated, or holds higher-order cells or (unless
+     * @p triangles) triangles.
      */
     SurfaceMeshData
-    read_gmsh_surface(const std::string &file, const std::string &parameter);
+    read_gmsh_surface(const std::string &file,
+                      const std::string &parameter,
+                      const bool         triangles = false);
 
     /**
      * Drop unused vertices, orient the cells consistently and create
