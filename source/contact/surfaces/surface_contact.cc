@@ -265,15 +265,21 @@ namespace pneuma
     SurfaceContact::current_patches(const LA::Vector *u) const
     {
       std::vector<MasterPatch> patches(cells.size());
-      for (unsigned int c = 0; c < cells.size(); ++c)
-        {
-          patches[c].degree = degree;
-          patches[c].nodes  = cells[c].reference;
-          if (u)
-            for (unsigned int a = 0; a < patches[c].nodes.size(); ++a)
-              for (unsigned int i = 0; i < 3; ++i)
-                patches[c].nodes[a][i] += (*u)[cells[c].dofs[3 * a + i]];
-        }
+      parallel::apply_to_subranges(
+        0u,
+        static_cast<unsigned int>(cells.size()),
+        [&](const unsigned int begin, const unsigned int end) {
+          for (unsigned int c = begin; c < end; ++c)
+            {
+              patches[c].degree = degree;
+              patches[c].nodes  = cells[c].reference;
+              if (u)
+                for (unsigned int a = 0; a < patches[c].nodes.size(); ++a)
+                  for (unsigned int i = 0; i < 3; ++i)
+                    patches[c].nodes[a][i] += (*u)[cells[c].dofs[3 * a + i]];
+            }
+        },
+        256);
       return patches;
     }
 
@@ -487,48 +493,72 @@ namespace pneuma
     SurfaceContact::active_points(const State   &state,
                                   SurfaceRecord *record) const
     {
-      const auto         &patches = state.patches;
       std::vector<Active> active;
       for (unsigned int k = 0; k < pairs.size(); ++k)
         for (unsigned int s = 0; s < pairs[k].sides.size(); ++s)
           {
-            const Side &side = pairs[k].sides[s];
-            for (unsigned int i = 0; i < side.slaves.size(); ++i)
-              {
-                const unsigned int c = side.slaves[i];
-                for (unsigned int q = 0; q < points.size(); ++q)
-                  {
-                    const Tensor<1, 3> x = position(patches[c], points[q]);
-                    Projection         p;
-                    const int          j = nearest(side, i, x, state, p);
-                    if (record)
-                      record->reports[k].points += 1;
-                    if (j < 0)
-                      continue;
-                    const unsigned int m   = side.candidates[i][j];
-                    const signed char  o   = side_of(side, i, q, j);
-                    const double       off = offset(c, m);
-                    const double       gap = o * p.gap - off;
-                    if (record)
-                      record->cell_gap[c] = std::min(record->cell_gap[c], gap);
-                    if (gap >= 0.)
-                      continue;
-                    Active a;
-                    a.pair        = k;
-                    a.side        = s;
-                    a.slave       = c;
-                    a.q           = q;
-                    a.master      = m;
-                    a.xi          = p.xi;
-                    a.gap         = gap;
-                    a.offset      = off;
-                    a.penalty     = cell_penalty(k, c);
-                    a.weight      = cells[c].weights[q];
-                    a.orientation = o;
-                    active.push_back(a);
-                  }
-              }
+            // The slaves on the task threads (each writes only its own
+            // cell's gap and its own orientations), joined in slave order:
+            // the list does not depend on the thread count.
+            const Side                      &side = pairs[k].sides[s];
+            std::vector<std::vector<Active>> of_slave(side.slaves.size());
+            parallel::apply_to_subranges(
+              0u,
+              static_cast<unsigned int>(side.slaves.size()),
+              [&](const unsigned int begin, const unsigned int end) {
+                for (unsigned int i = begin; i < end; ++i)
+                  of_slave[i] = slave_points(k, s, i, state, record);
+              },
+              16);
+            for (auto &a : of_slave)
+              active.insert(active.end(),
+                            std::make_move_iterator(a.begin()),
+                            std::make_move_iterator(a.end()));
+            if (record)
+              record->reports[k].points += side.slaves.size() * points.size();
           }
+      return active;
+    }
+
+    std::vector<SurfaceContact::Active>
+    SurfaceContact::slave_points(const unsigned int k,
+                                 const unsigned int s,
+                                 const unsigned int i,
+                                 const State       &state,
+                                 SurfaceRecord     *record) const
+    {
+      const Side         &side = pairs[k].sides[s];
+      const unsigned int  c    = side.slaves[i];
+      std::vector<Active> active;
+      for (unsigned int q = 0; q < points.size(); ++q)
+        {
+          const Tensor<1, 3> x = position(state.patches[c], points[q]);
+          Projection         p;
+          const int          j = nearest(side, i, x, state, p);
+          if (j < 0)
+            continue;
+          const unsigned int m   = side.candidates[i][j];
+          const signed char  o   = side_of(side, i, q, j);
+          const double       off = offset(c, m);
+          const double       gap = o * p.gap - off;
+          if (record)
+            record->cell_gap[c] = std::min(record->cell_gap[c], gap);
+          if (gap >= 0.)
+            continue;
+          Active a;
+          a.pair        = k;
+          a.side        = s;
+          a.slave       = c;
+          a.q           = q;
+          a.master      = m;
+          a.xi          = p.xi;
+          a.gap         = gap;
+          a.offset      = off;
+          a.penalty     = cell_penalty(k, c);
+          a.weight      = cells[c].weights[q];
+          a.orientation = o;
+          active.push_back(a);
+        }
       return active;
     }
 

@@ -263,6 +263,14 @@ namespace pneuma
                   const bool         start) const;
       std::vector<Active>
       active_points(const State &state, SurfaceRecord *record) const;
+      /// The points of slave @p i of side @p s of pair @p k in contact at
+      /// @p state (with a record: their cell's smallest gap).
+      std::vector<Active>
+      slave_points(const unsigned int k,
+                   const unsigned int s,
+                   const unsigned int i,
+                   const State       &state,
+                   SurfaceRecord     *record) const;
       /// The reports and per-cell values of the points @p active (summed
       /// over the ranks).
       void
