@@ -249,6 +249,13 @@ check "$dir/valid.prm"              1 "Obstacles/Obstacle 1/gmsh/Mesh file: cann
 check "$dir/valid.prm"              1 "catenary_line.msh' holds no triangles or quadrilaterals" "${g[@]}" --set "Obstacles/Obstacle 1/gmsh/Mesh file=$dir/../../meshes/catenary_line.msh"
 check "$dir/valid.prm"              1 "triangles; a rigid surface must be a manifold" "${g[@]}" --set "Obstacles/Obstacle 1/gmsh/Mesh file=$dir/../../meshes/waterbeam.msh"
 check_mpi "$dir/valid.prm"          1 "Obstacles/Obstacle 1: the membrane starts inside the obstacle" "${g[@]}" --set "Obstacles/Obstacle 1/gmsh/Mesh file=$dir/../../meshes/obstacle_slab.msh" --set "Obstacles/Obstacle 1/Displacement/Function expression=0; 0; -0.05"
+# Obstacles loaded by a force: a zero direction, a strategy without a
+# matrix (their positions have no value for a given field).
+f="$dir/../../parameter_files/tube_pressed_by_force.prm"
+fq=(--set "Output/Quiet=true" --set "Output/Directory=out_bad")
+check "$f"                          1 "Obstacles/Obstacle 1/Force direction: '0, 0, 0' is not a direction" "${fq[@]}" --set "Obstacles/Obstacle 1/Force direction=0, 0, 0"
+check "$f"                          1 "Load stepping/Strategy: explicit dynamics cannot follow the border unknowns of the obstacles" "${fq[@]}" --set "Load stepping/Strategy=static, explicit"
+check_mpi "$f"                      1 "Load stepping/Strategy: the relaxation cannot follow the border unknowns of the obstacles" "${fq[@]}" --set "Load stepping/Strategy=static, relaxation"
 # Membrane-to-membrane contact: regions, penalties, and membranes that
 # overlap at the start (meshes/two_sheets.msh: 0.5 mm apart, t = 1 mm).
 surface=(--set "Surface contact/Number of pairs=1")

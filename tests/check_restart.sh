@@ -48,7 +48,8 @@ for case in \
   "membrane_vibration 1 1 50 $src/parameter_files/membrane_vibration.prm" \
   "membrane_vibration 2 2 50 $src/parameter_files/membrane_vibration.prm" \
   "sheet_dragged 1 1 6 $src/parameter_files/sheet_dragged.prm" \
-  "sheet_dragged 2 1 6 $src/parameter_files/sheet_dragged.prm"; do
+  "sheet_dragged 2 1 6 $src/parameter_files/sheet_dragged.prm" \
+  "tube_pressed_by_force 1 1 14 $src/parameter_files/tube_pressed_by_force.prm"; do
   set -- $case
   name="$1" first="$2" second="$3" stop="$4" prm="$5"
   full="$name-$first-full" part="$name-$first-$second-restart"

@@ -491,7 +491,18 @@ namespace pneuma
       }
     if (grown)
       rebuild_matrices();
-    state.border = subsystem_border(subsystems, border_offsets, n_border());
+    // The subsystems' predictions; the others keep the strategy's (the
+    // last state, or its extrapolation).
+    const Vector<double> predicted =
+      subsystem_border(subsystems, border_offsets, n_border());
+    if (state.border.size() != n_border())
+      state.border = predicted;
+    else
+      for (unsigned int k = 0; k < subsystems.size(); ++k)
+        if (subsystems[k]->predicts_border())
+          for (unsigned int j = 0; j < subsystems[k]->n_border_unknowns(); ++j)
+            state.border[border_offsets[k] + j] =
+              predicted[border_offsets[k] + j];
     return "";
   }
 

@@ -12,6 +12,7 @@ namespace pneuma
       C.assign(n, field);
       has_B.assign(n, false);
       has_C.assign(n, false);
+      primal.assign(n, false);
       D.reinit(n, n);
       unknown_scale.assign(n, 1.);
       residual_scale.assign(n, 1.);

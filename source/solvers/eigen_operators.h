@@ -136,10 +136,10 @@ namespace pneuma
             for (unsigned int j = 0; j < m; ++j)
               S(i, j) = e.AD(i, j) - B[i] * Z[j];
           // Sylvester's count (an LU's pivots count nothing).
-          negative  = symmetric
-                        ? static_cast<long long>(k.negative)
-                           + negative_eigenvalues(S) - static_cast<long long>(m)
-                        : -1;
+          negative  = symmetric ? static_cast<long long>(k.negative)
+                                   + negative_eigenvalues(S)
+                                   - static_cast<long long>(e.n_dual)
+                                : -1;
           S_inverse = S;
           if (m > 0)
             S_inverse.gauss_jordan();

@@ -81,6 +81,8 @@ namespace pneuma
             && c.C[j].l2_norm() > 0.)
           e.kept.push_back(j);
       const unsigned int m = e.kept.size();
+      for (const auto j : e.kept)
+        e.n_dual += j < c.primal.size() && c.primal[j] ? 0 : 1;
       e.X.reinit(m, m);
       e.AD.reinit(m, m);
       if (m == 0)
@@ -152,8 +154,16 @@ namespace pneuma
               e.energy_form = false;
             e.AD(i, j) = e.AD(j, i) = 0.5 * (e.AD(i, j) + e.AD(j, i));
           }
-      FullMatrix<double> minus_AD(m, m);
-      minus_AD.add(-1., e.AD);
+      // (Over the multipliers: a primal unknown's A D is its positive
+      // stiffness.)
+      std::vector<unsigned int> dual;
+      for (unsigned int i = 0; i < m; ++i)
+        if (!(e.kept[i] < c.primal.size() && c.primal[e.kept[i]]))
+          dual.push_back(i);
+      FullMatrix<double> minus_AD(dual.size(), dual.size());
+      for (unsigned int i = 0; i < dual.size(); ++i)
+        for (unsigned int j = 0; j < dual.size(); ++j)
+          minus_AD(i, j) = -e.AD(dual[i], dual[j]);
       if (scale > 0. && negative_eigenvalues(minus_AD) > 0)
         e.energy_form = false;
       return e;
@@ -246,7 +256,7 @@ namespace pneuma
                 }
             }
         }
-      report.negative = k.negative + negative_eigenvalues(S) - m;
+      report.negative = k.negative + negative_eigenvalues(S) - e.n_dual;
       if (!report.energy_form)
         {
           report.negative = -1;

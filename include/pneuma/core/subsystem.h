@@ -209,6 +209,15 @@ namespace pneuma
     {
       return {};
     }
+    /// Whether border() predicts the unknowns at the start of a step (a
+    /// chamber's pressure from the field); if not, a step starts from the
+    /// strategy's own values (the last state, or its extrapolation), and
+    /// border() is only the accepted state's.
+    virtual bool
+    predicts_border() const
+    {
+      return true;
+    }
     /// Assemble this subsystem's contributions into @p assembly.
     virtual void
     assemble(const Assembly &assembly) = 0;

@@ -57,6 +57,11 @@ namespace pneuma
       /// C = dg_j/du (if has_C[j]), physical units.
       std::vector<LA::Vector> B, C;
       std::vector<bool>       has_B, has_C;
+      /// Unknowns that are coordinates of the potential (a force-driven
+      /// obstacle's position: B = C, D its own stiffness), not
+      /// multipliers of a constraint or a chamber's pressure: the stability
+      /// count takes their Schur complement as it is.
+      std::vector<bool> primal;
       /// dg/dlambda, physical units.
       FullMatrix<double>  D;
       std::vector<double> unknown_scale, residual_scale;

@@ -90,6 +90,9 @@ namespace pneuma
       dealii::FullMatrix<double> X;
       dealii::FullMatrix<double> AD;
       bool                       energy_form = true;
+      /// Kept unknowns that are not primal (each adds one negative
+      /// direction to the bordered matrix).
+      unsigned int n_dual = 0;
       unsigned int
       size() const
       {

@@ -212,6 +212,8 @@ namespace pneuma
           f.set_time(t);
           for (unsigned int c = 0; c < 3; ++c)
             d[k][c] = f.value(Point<3>(), c);
+          if (k < positions.size())
+            d[k] += positions[k] * obstacles[k].force_direction;
         }
       return d;
     }
@@ -240,7 +242,8 @@ namespace pneuma
                           const bool                         with_area,
                           ObstacleCellOutput                *output,
                           const PointFriction               *anchors,
-                          PointFriction                     *accepted) const
+                          PointFriction                     *accepted,
+                          const std::vector<Sink>           *own) const
     {
       const unsigned int n_q = reference.n_q_points(), n = reference.n_nodes();
       const NodeDofs     dof  = node_dofs(reference);
@@ -284,7 +287,14 @@ namespace pneuma
               if (with_area)
                 sum.area += J * w;
               force += p * w;
-              add_point_terms(s, g, eps[k], N, w, n, dof, matrix, residual);
+              FullMatrix<double> *matrix_k   = matrix;
+              Vector<double>     *residual_k = residual;
+              if (own != nullptr && (*own)[k].residual != nullptr)
+                {
+                  matrix_k   = (*own)[k].matrix;
+                  residual_k = (*own)[k].residual;
+                }
+              add_point_terms(s, g, eps[k], N, w, n, dof, matrix_k, residual_k);
               const auto &def = obstacles[k];
               if (anchors == nullptr || def.friction == 0.)
                 continue;
@@ -305,8 +315,8 @@ namespace pneuma
                                          w,
                                          n,
                                          dof,
-                                         matrix,
-                                         residual);
+                                         matrix_k,
+                                         residual_k);
                   sum.force -= w * r.t;
                   sum.friction_force += r.t.norm() * w;
                   sum.slip_points += r.at_limit ? 1 : 0;

@@ -77,6 +77,21 @@ namespace pneuma
                             "penalty.",
                             Patterns::Double(0.));
           loads::declare_function(prm, "Displacement", 3, "0; 0; 0");
+          prm.add_parameter(
+            "Control",
+            t.control,
+            "displacement: the obstacle moves by its Displacement alone. "
+            "force: it also moves along Force direction by as much as "
+            "makes the membrane's contact force on it balance Force (its "
+            "position along that direction is an unknown; a weight, a "
+            "plate pressed by a jack). Needs a static strategy.",
+            Patterns::Selection("displacement|force"));
+          loads::declare_function(prm, "Force", 1, "0");
+          prm.add_parameter("Force direction",
+                            t.direction,
+                            "x, y, z of the direction in which Force pushes "
+                            "the obstacle (any length; Control = force).",
+                            Patterns::Anything());
           t.shapes = shapes.declare_all(prm);
           prm.leave_subsection();
         }
@@ -116,6 +131,12 @@ namespace pneuma
                                 "Displacement",
                                 def.path + "/Displacement",
                                 true);
+          def.force_controlled = t.control == "force";
+          def.force = std::make_unique<Functions::ParsedFunction<3>>(1);
+          loads::parse_function(
+            prm, *def.force, "Force", def.path + "/Force", true);
+          def.force_direction =
+            parse_direction(t.direction, def.path + "/Force direction");
           def.shape_name = t.shape;
           def.shape      = ObstacleShapeRegistry::instance().take(
             t.shapes, prm, t.shape, def.path + "/Shape", def.path);

@@ -27,15 +27,22 @@ namespace pneuma
         return *m;
       }
 
-      /// A thread's sums of a cell (an assembly does not add them up).
+      /// A thread's sums of a cell (an assembly does not add them up),
+      /// and the force-controlled obstacles' own terms of a cell.
       struct SumsScratch : membrane::CellTerms::Scratch
       {
-        std::vector<ObstacleSums> sums;
+        std::vector<ObstacleSums>          sums;
+        std::vector<FullMatrix<double>>    matrix;
+        std::vector<Vector<double>>        residual;
+        std::vector<ObstacleContact::Sink> sinks;
       };
-      /// Records hold nothing: the contact adds no sums across cells to
-      /// an assembly.
-      struct NoRecord : membrane::CellTerms::Record
+      /// Per force-controlled obstacle, what one cell adds to its row:
+      /// e . f, the local B and C, D, and its points in contact.
+      struct ForceRecord : membrane::CellTerms::Record
       {
+        std::vector<double>         force, stiffness;
+        std::vector<unsigned int>   points;
+        std::vector<Vector<double>> B, C;
       };
     } // namespace
 
@@ -90,8 +97,14 @@ namespace pneuma
           check_input(ids.count(id) > 0,
                       def.path + "/Regions",
                       "the mesh has no cells in region " + std::to_string(id));
-      contact          = std::make_unique<ObstacleContact>(parameters.obstacles,
+      contact = std::make_unique<ObstacleContact>(parameters.obstacles,
                                                   membrane.material_regions());
+      force_controlled.clear();
+      for (unsigned int k = 0; k < parameters.obstacles.size(); ++k)
+        if (parameters.obstacles[k].force_controlled)
+          force_controlled.push_back(k);
+      accepted_positions.reinit(force_controlled.size());
+      set_positions(nullptr);
       const auto range = penalty_range();
       for (unsigned int k = 0; k < contact->size(); ++k)
         {
@@ -233,9 +246,58 @@ namespace pneuma
         accept_friction(field, t);
     }
 
+    unsigned int
+    ObstacleSubsystem::n_border_unknowns() const
+    {
+      unsigned int n = 0;
+      for (const auto &def : parameters.obstacles)
+        n += def.force_controlled ? 1 : 0;
+      return n;
+    }
+
+    Vector<double>
+    ObstacleSubsystem::border() const
+    {
+      return accepted_positions;
+    }
+
+    void
+    ObstacleSubsystem::reject_step()
+    {
+      set_positions(nullptr);
+    }
+
+    void
+    ObstacleSubsystem::set_positions(const Vector<double> *border)
+    {
+      std::vector<double> s(parameters.obstacles.size(), 0.);
+      const unsigned int  offset = border ? model.border_offset(*this) : 0;
+      for (unsigned int j = 0; j < force_controlled.size(); ++j)
+        s[force_controlled[j]] =
+          border ? (*border)[offset + j] : accepted_positions[j];
+      contact->set_positions(s);
+    }
+
     void
     ObstacleSubsystem::begin(const Assembly &a)
     {
+      assembly = &a;
+      if (!force_controlled.empty())
+        {
+          const unsigned int n = force_controlled.size();
+          set_positions(a.border != nullptr && a.border->size() > 0 ? a.border
+                                                                    : nullptr);
+          force_sum.assign(n, 0.);
+          stiffness_sum.assign(n, 0.);
+          contact_points.assign(n, 0);
+          if (a.tangent != nullptr && a.coupling != nullptr)
+            for (unsigned int j = 0; j < n; ++j)
+              {
+                const unsigned int row = model.border_offset(*this) + j;
+                a.coupling->B[row]     = 0.;
+                a.coupling->C[row]     = 0.;
+              }
+        }
       assembly_translations = contact->translations(a.time);
       if (!contact->has_friction())
         return;
@@ -275,10 +337,15 @@ namespace pneuma
     }
 
     void
-    ObstacleSubsystem::commit_step(const double      t,
-                                   const LA::Vector &field,
-                                   const Vector<double> &)
+    ObstacleSubsystem::commit_step(const double          t,
+                                   const LA::Vector     &field,
+                                   const Vector<double> &border)
     {
+      if (!force_controlled.empty())
+        {
+          accepted_positions = border;
+          set_positions(nullptr);
+        }
       if (!anchors.empty())
         accept_friction(field, t);
     }
@@ -322,6 +389,10 @@ namespace pneuma
       Checkpoint &checkpoint,
       const std::vector<const LA::Vector *> &) const
     {
+      if (!force_controlled.empty())
+        checkpoint.put("obstacles/positions",
+                       std::vector<double>(accepted_positions.begin(),
+                                           accepted_positions.end()));
       if (!contact->has_friction())
         return;
       // Per owned cell: its id and, per point and obstacle, the flag and
@@ -353,6 +424,18 @@ namespace pneuma
     ObstacleSubsystem::load_checkpoint(const Checkpoint &checkpoint,
                                        const std::vector<LA::Vector *> &)
     {
+      if (!force_controlled.empty())
+        {
+          const auto s =
+            checkpoint.get<std::vector<double>>("obstacles/positions");
+          check_input(s.size() == force_controlled.size(),
+                      "--restart " + checkpoint.directory(),
+                      "the checkpoint has another number of obstacles "
+                      "loaded by a force");
+          for (unsigned int j = 0; j < s.size(); ++j)
+            accepted_positions[j] = s[j];
+          set_positions(nullptr);
+        }
       if (!contact->has_friction())
         return;
       using Entry = std::pair<std::string, std::vector<double>>;
@@ -390,13 +473,24 @@ namespace pneuma
     {
       auto scratch = std::make_unique<SumsScratch>();
       scratch->sums.resize(contact->size());
+      const unsigned int n = 3 * membrane.reference_geometry().n_nodes();
+      scratch->matrix.assign(force_controlled.size(), FullMatrix<double>(n, n));
+      scratch->residual.assign(force_controlled.size(), Vector<double>(n));
+      scratch->sinks.resize(contact->size());
       return scratch;
     }
 
     std::unique_ptr<membrane::CellTerms::Record>
     ObstacleSubsystem::new_record() const
     {
-      return std::make_unique<NoRecord>();
+      auto               record = std::make_unique<ForceRecord>();
+      const unsigned int n      = force_controlled.size();
+      record->force.resize(n);
+      record->stiffness.resize(n);
+      record->points.resize(n);
+      record->B.resize(n);
+      record->C.resize(n);
+      return record;
     }
 
     void
@@ -407,9 +501,22 @@ namespace pneuma
                             FullMatrix<double>                *cell_matrix,
                             Vector<double>                    *cell_residual,
                             membrane::CellTerms::Scratch      &scratch,
-                            membrane::CellTerms::Record &) const
+                            membrane::CellTerms::Record       &record) const
     {
-      auto &sums = static_cast<SumsScratch &>(scratch).sums;
+      auto &sc = static_cast<SumsScratch &>(scratch);
+      // A force-controlled obstacle's terms go to its own matrix and
+      // residual first.
+      for (unsigned int j = 0; j < force_controlled.size(); ++j)
+        {
+          sc.residual[j] = 0.;
+          if (cell_matrix != nullptr)
+            sc.matrix[j] = 0.;
+          sc.sinks[force_controlled[j]] = {
+            cell_matrix != nullptr ? &sc.matrix[j] : nullptr, &sc.residual[j]};
+        }
+      std::vector<unsigned int> before(force_controlled.size());
+      for (unsigned int j = 0; j < force_controlled.size(); ++j)
+        before[j] = sc.sums[force_controlled[j]].points;
       contact->cell(cell->material_id(),
                     reference,
                     cell_index,
@@ -417,16 +524,130 @@ namespace pneuma
                     assembly_translations,
                     cell_matrix,
                     cell_residual,
-                    sums,
+                    sc.sums,
                     false,
                     nullptr,
-                    friction_of(cell_index));
+                    friction_of(cell_index),
+                    nullptr,
+                    force_controlled.empty() ? nullptr : &sc.sinks);
+      auto &r = static_cast<ForceRecord &>(record);
+      for (unsigned int j = 0; j < force_controlled.size(); ++j)
+        {
+          r.points[j] = sc.sums[force_controlled[j]].points - before[j];
+          r.force[j] = r.stiffness[j] = 0.;
+          if (r.points[j] == 0)
+            continue;
+          add_force_row(reference,
+                        force_controlled[j],
+                        sc.matrix[j],
+                        sc.residual[j],
+                        cell_matrix,
+                        cell_residual,
+                        r,
+                        j);
+        }
     }
 
     void
-    ObstacleSubsystem::commit(const membrane::CellTerms::Record &,
-                              const std::vector<types::global_dof_index> &)
+    ObstacleSubsystem::add_force_row(
+      const membrane::ReferenceGeometry &reference,
+      const unsigned int                 k,
+      const FullMatrix<double>          &M,
+      const Vector<double>              &f,
+      FullMatrix<double>                *cell_matrix,
+      Vector<double>                    *cell_residual,
+      membrane::CellTerms::Record       &record,
+      const unsigned int                 j) const
     {
+      auto &r = static_cast<ForceRecord &>(record);
+      // E: the rigid motion along e; e . f = E . r, and with the terms
+      // depending on x - s e: dr/ds = -M E, d(E . r)/du = M^T E. The row
+      // is g = -(F + e . f) = dPi/ds (Pi the potential with the load's
+      // -F s): B = -M E, C = -M^T E (= B where M is symmetric), D = E M E.
+      const unsigned int n = f.size();
+      const auto        &e = parameters.obstacles[k].force_direction;
+      Vector<double>     E(n);
+      for (unsigned int i = 0; i < n; ++i)
+        E[i] = e[reference.component(i)];
+      r.force[j] = E * f;
+      if (cell_residual != nullptr)
+        *cell_residual += f;
+      if (cell_matrix == nullptr)
+        return;
+      cell_matrix->add(1., M);
+      r.B[j].reinit(n);
+      r.C[j].reinit(n);
+      M.vmult(r.B[j], E);
+      r.B[j] *= -1.;
+      M.Tvmult(r.C[j], E);
+      r.C[j] *= -1.;
+      r.stiffness[j] = -(r.B[j] * E);
+    }
+
+    void
+    ObstacleSubsystem::commit(const membrane::CellTerms::Record &record,
+                              const std::vector<types::global_dof_index> &dofs)
+    {
+      const auto &r = static_cast<const ForceRecord &>(record);
+      for (unsigned int j = 0; j < force_controlled.size(); ++j)
+        {
+          if (r.points[j] == 0)
+            continue;
+          contact_points[j] += r.points[j];
+          force_sum[j] += r.force[j];
+          stiffness_sum[j] += r.stiffness[j];
+          if (assembly->tangent == nullptr || assembly->coupling == nullptr)
+            continue;
+          const unsigned int row = model.border_offset(*this) + j;
+          assembly->constraints->distribute_local_to_global(
+            r.B[j], dofs, assembly->coupling->B[row]);
+          assembly->constraints->distribute_local_to_global(
+            r.C[j], dofs, assembly->coupling->C[row]);
+        }
+    }
+
+    void
+    ObstacleSubsystem::end()
+    {
+      if (force_controlled.empty())
+        return;
+      const MPI_Comm     comm   = model.mpi_communicator();
+      const auto        &a      = *assembly;
+      const bool         matrix = a.tangent != nullptr && a.coupling != nullptr;
+      const unsigned int offset = model.border_offset(*this);
+      for (unsigned int j = 0; j < force_controlled.size(); ++j)
+        {
+          const unsigned int row = offset + j;
+          const auto        &def = parameters.obstacles[force_controlled[j]];
+          const unsigned int points =
+            Utilities::MPI::sum(contact_points[j], comm);
+          const double f = Utilities::MPI::sum(force_sum[j], comm);
+          const double D = Utilities::MPI::sum(stiffness_sum[j], comm);
+          if (matrix)
+            {
+              a.coupling->B[row].compress(VectorOperation::add);
+              a.coupling->C[row].compress(VectorOperation::add);
+            }
+          if (a.coupling != nullptr)
+            {
+              auto &c = *a.coupling;
+              for (unsigned int k = 0; k < c.size(); ++k)
+                c.D(row, k) = 0.;
+              c.unknown_scale[row]  = 1.;
+              c.residual_scale[row] = 1.;
+              c.has_B[row] = c.has_C[row] = matrix && points > 0;
+              c.primal[row]               = true;
+              c.D(row, row)               = points > 0 ? D : 1.;
+            }
+          // Touching nothing, the obstacle keeps its position.
+          double g = (*a.border)[row] - accepted_positions[j];
+          if (points > 0)
+            {
+              def.force->set_time(a.time);
+              g = -(def.force->value(Point<3>()) + f);
+            }
+          (*a.border_residual)[row] = g;
+        }
     }
 
     void

@@ -110,10 +110,33 @@ namespace pneuma
       ObstacleContact(const std::vector<ObstacleDefinition> &obstacles,
                       const membrane::MaterialRegions       &materials);
 
-      /// The obstacles' translations d_k(t) (not concurrently: it sets
-      /// the time of their functions).
+      /// The obstacles' translations d_k(t) + s_k e_k (not concurrently:
+      /// it sets the time of their functions), with s_k the positions of
+      /// the force-controlled obstacles (set_positions; 0 for the others).
       std::vector<Tensor<1, 3>>
       translations(const double t) const;
+
+      /// The force-controlled obstacles' positions s_k along their Force
+      /// direction [m] (one per obstacle).
+      void
+      set_positions(const std::vector<double> &s)
+      {
+        positions = s;
+      }
+      const std::vector<double> &
+      get_positions() const
+      {
+        return positions;
+      }
+
+      /// Where the terms of one obstacle go instead of the cell's matrix
+      /// and residual (a force-controlled obstacle's own, for its border
+      /// couplings).
+      struct Sink
+      {
+        FullMatrix<double> *matrix   = nullptr;
+        Vector<double>     *residual = nullptr;
+      };
 
       /// Penalty of obstacle @p k on a cell of region @p id with
       /// reference area @p area and element degree @p degree [Pa/m].
@@ -133,7 +156,9 @@ namespace pneuma
        * friction, @p anchors holds the cell's friction state (point q,
        * obstacle k at q * size() + k; nullptr: frictionless), and
        * @p accepted, if given, receives the state this one leaves when it
-       * is accepted. May run concurrently on other cells.
+       * is accepted. With @p own, the terms of obstacle k go to
+       * (*own)[k] where its residual is given. May run concurrently on
+       * other cells.
        */
       void
       cell(const types::material_id           id,
@@ -147,7 +172,8 @@ namespace pneuma
            const bool                         with_area,
            ObstacleCellOutput                *output   = nullptr,
            const PointFriction               *anchors  = nullptr,
-           PointFriction                     *accepted = nullptr) const;
+           PointFriction                     *accepted = nullptr,
+           const std::vector<Sink>           *own      = nullptr) const;
 
       /// Does any obstacle have friction?
       bool
@@ -163,6 +189,7 @@ namespace pneuma
     private:
       const std::vector<ObstacleDefinition> &obstacles;
       const membrane::MaterialRegions       &materials;
+      std::vector<double>                    positions;
     };
   } // namespace contact
 } // namespace pneuma

@@ -51,6 +51,14 @@ namespace pneuma
       double tangential_penalty = 0.;
       /// "Displacement": the obstacle's rigid translation d(t) [m].
       std::unique_ptr<Functions::ParsedFunction<3>> displacement;
+      /// "Control = force": the obstacle also moves by an unknown s along
+      /// "Force direction" e (unit), such that the membrane's contact
+      /// force on it balances "Force" F(t) along e.
+      bool force_controlled = false;
+      /// "Force": F(t) [N], pushing the obstacle along e.
+      std::unique_ptr<Functions::ParsedFunction<3>> force;
+      /// "Force direction" e.
+      Tensor<1, 3> force_direction;
 
       /// Does the obstacle touch the region @p id?
       bool
@@ -82,8 +90,9 @@ namespace pneuma
       /// obstacle (bound members: sized once in declare_parameters).
       struct Text
       {
-        std::string                                           regions;
-        std::string                                           shape = "plane";
+        std::string regions;
+        std::string shape   = "plane";
+        std::string control = "displacement", direction = "0, 0, -1";
         std::map<std::string, std::unique_ptr<ObstacleShape>> shapes;
       };
       std::vector<Text> text;

@@ -7,10 +7,19 @@
  * that stand still or move by a prescribed translation
  * (contact/obstacles/obstacle_contact.h, doc/theory.md "Rigid
  * obstacles"). Present only when "Obstacles/Number of obstacles" is
- * positive. It has no unknowns: its terms join the membrane's cell loop
- * (membrane::CellTerms), and its forces count as applied loads in the
- * membrane's reactions; each obstacle reports the force on it, its
- * contact area, its largest penetration and its penalty energy.
+ * positive. Its terms join the membrane's cell loop (membrane::CellTerms),
+ * and its forces count as applied loads in the membrane's reactions; each
+ * obstacle reports the force on it, its contact area, its largest
+ * penetration and its penalty energy.
+ *
+ * An obstacle with "Control = force" has one border unknown, its position
+ * s along its Force direction e (doc/theory.md §19, "Obstacles loaded by
+ * a force"): the row -(F(t) + e . f) = 0 (f the membrane's contact force
+ * on it; the derivative of the potential by s) with the blocks
+ * B = -K_k E, C = -K_k^T E, D = E . K_k E from the obstacle's own contact
+ * tangent K_k on each cell and E the rigid motion along e (symmetric
+ * without friction); while it touches nothing, it keeps its position
+ * (s = s_0).
  */
 
 #include <pneuma/contact/obstacles/obstacle_contact.h>
@@ -46,6 +55,22 @@ namespace pneuma
       name() const override
       {
         return "obstacles";
+      }
+      /// One per force-controlled obstacle: its position s [m].
+      unsigned int
+      n_border_unknowns() const override;
+      /// The positions of the last accepted state.
+      Vector<double>
+      border() const override;
+      /// The positions of the last accepted state again.
+      void
+      reject_step() override;
+      /// A step starts from the strategy's positions (extrapolated with
+      /// the field).
+      bool
+      predicts_border() const override
+      {
+        return false;
       }
       /// The membrane may rest on the obstacles.
       bool
@@ -105,10 +130,9 @@ namespace pneuma
       void
       commit(const membrane::CellTerms::Record          &record,
              const std::vector<types::global_dof_index> &dof_indices) override;
+      /// The force-controlled obstacles' rows and blocks.
       void
-      end() override
-      {
-      }
+      end() override;
       void
       add_loads(const LA::Vector                &u,
                 const AffineConstraints<double> &constraints,
@@ -143,6 +167,22 @@ namespace pneuma
       /// Entries of the friction state per cell (points x obstacles).
       unsigned int
       friction_stride() const;
+      /// The row of the force-controlled obstacle @p k (its @p j th) on
+      /// one cell from its own terms @p M, @p f there: adds them to the
+      /// cell's (either may be nullptr) and fills @p record.
+      void
+      add_force_row(const membrane::ReferenceGeometry &reference,
+                    const unsigned int                 k,
+                    const FullMatrix<double>          &M,
+                    const Vector<double>              &f,
+                    FullMatrix<double>                *cell_matrix,
+                    Vector<double>                    *cell_residual,
+                    membrane::CellTerms::Record       &record,
+                    const unsigned int                 j) const;
+      /// Move the force-controlled obstacles to @p border's positions
+      /// (nullptr: the accepted ones).
+      void
+      set_positions(const Vector<double> *border);
 
       Model                           &model;
       membrane::MembraneSubsystem     &membrane;
@@ -155,6 +195,16 @@ namespace pneuma
       /// the last accepted step (sized at the first assembly on a mesh; a
       /// new mesh starts without anchors).
       std::vector<PointFriction> anchors;
+
+      /// The force-controlled obstacles (their border rows in this order).
+      std::vector<unsigned int> force_controlled;
+      /// Their positions in the last accepted state [m].
+      Vector<double> accepted_positions;
+      /// During an assembly: the assembly, and per force-controlled
+      /// obstacle e . f, D and its points in contact on this rank.
+      const Assembly           *assembly = nullptr;
+      std::vector<double>       force_sum, stiffness_sum;
+      std::vector<unsigned int> contact_points;
     };
   } // namespace contact
 } // namespace pneuma
