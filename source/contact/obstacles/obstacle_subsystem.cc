@@ -505,18 +505,14 @@ namespace pneuma
     {
       auto &sc = static_cast<SumsScratch &>(scratch);
       // A force-controlled obstacle's terms go to its own matrix and
-      // residual first.
+      // residual first (zero between the cells it touches); its point
+      // count starts at zero (a thread's sums are not added up).
       for (unsigned int j = 0; j < force_controlled.size(); ++j)
         {
-          sc.residual[j] = 0.;
-          if (cell_matrix != nullptr)
-            sc.matrix[j] = 0.;
           sc.sinks[force_controlled[j]] = {
             cell_matrix != nullptr ? &sc.matrix[j] : nullptr, &sc.residual[j]};
+          sc.sums[force_controlled[j]].points = 0;
         }
-      std::vector<unsigned int> before(force_controlled.size());
-      for (unsigned int j = 0; j < force_controlled.size(); ++j)
-        before[j] = sc.sums[force_controlled[j]].points;
       contact->cell(cell->material_id(),
                     reference,
                     cell_index,
@@ -533,7 +529,7 @@ namespace pneuma
       auto &r = static_cast<ForceRecord &>(record);
       for (unsigned int j = 0; j < force_controlled.size(); ++j)
         {
-          r.points[j] = sc.sums[force_controlled[j]].points - before[j];
+          r.points[j] = sc.sums[force_controlled[j]].points;
           r.force[j] = r.stiffness[j] = 0.;
           if (r.points[j] == 0)
             continue;
@@ -545,6 +541,9 @@ namespace pneuma
                         cell_residual,
                         r,
                         j);
+          sc.residual[j] = 0.;
+          if (cell_matrix != nullptr)
+            sc.matrix[j] = 0.;
         }
     }
 
