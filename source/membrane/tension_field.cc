@@ -102,7 +102,7 @@ namespace pneuma
       // Start: the exact relaxed state, each of its directions with the
       // scalar barrier problem s + d b/2 = 2 delta/b (d = v.v:D:v.v):
       // - taut: b along each principal direction v of S(C);
-      // - wrinkled: beta m x m, and b along the tension direction p;
+      // - wrinkled: about beta m x m, and b along the tension direction p;
       // - slack: C_0 - C, and the barrier's width zeta = 2 sqrt(delta/d)
       //   added (its border has a zero eigenvalue).
       // (Estimating a wrinkled point from S(C) alone starts from a B of
@@ -122,9 +122,16 @@ namespace pneuma
       if (exact.kind == WrinklingState::wrinkled && beta > 0.
           && std::isfinite(S_exact.norm()))
         {
-          const Tensor<1, 2>         &p = exact.tension_direction;
-          const SymmetricTensor<2, 2> P = sym_dyad(p, p);
-          B                             = beta * sym_dyad(m, m)
+          // Along m the plain stress at C is about -d_m beta/2, so the
+          // scalar problem gives (beta + sqrt(beta^2 + 16 delta/d_m))/2:
+          // beta where the wrinkles are deep, the barrier's width zeta
+          // where beta is far below it (near the reference state, where
+          // beta m x m alone left B nearly singular).
+          const Tensor<1, 2>         &p   = exact.tension_direction;
+          const SymmetricTensor<2, 2> P   = sym_dyad(p, p);
+          const SymmetricTensor<2, 2> M   = sym_dyad(m, m);
+          const double                d_m = std::max(M * (D_plain * M), 1e-300);
+          B                               = scalar(-0.5 * d_m * beta, d_m) * M
               + scalar(p * (S_exact * p), std::max(P * (D_exact * P), 1e-300))
                   * P;
         }
