@@ -6,6 +6,7 @@
 #include <deal.II/numerics/rtree.h>
 
 #include <pneuma/contact/derived_penalty.h>
+#include <pneuma/contact/surfaces/cell_search.h>
 #include <pneuma/contact/surfaces/surface_contact.h>
 
 #include <algorithm>
@@ -21,33 +22,6 @@ namespace pneuma
     namespace
     {
       using Box = std::pair<Tensor<1, 3>, Tensor<1, 3>>;
-
-      BoundingBox<3>
-      enlarged(const Box &box, const double reach)
-      {
-        Point<3> lower, upper;
-        for (unsigned int i = 0; i < 3; ++i)
-          {
-            lower[i] = box.first[i] - reach;
-            upper[i] = box.second[i] + reach;
-          }
-        return BoundingBox<3>({lower, upper});
-      }
-
-      /// Cells of @p tree whose boxes touch @p box, in cell order.
-      template <class Tree>
-      std::vector<unsigned int>
-      cells_near(const Tree &tree, const BoundingBox<3> &box)
-      {
-        std::vector<std::pair<BoundingBox<3>, unsigned int>> hits;
-        tree.query(boost::geometry::index::intersects(box),
-                   std::back_inserter(hits));
-        std::vector<unsigned int> found;
-        for (const auto &hit : hits)
-          found.push_back(hit.second);
-        std::sort(found.begin(), found.end());
-        return found;
-      }
 
       /// Is @p x within @p margin of @p box?
       bool
@@ -86,6 +60,7 @@ namespace pneuma
           unit_weights.push_back(gauss.weight(q));
         }
       make_sides();
+      find_seams();
       coupled.clear();
     }
 
@@ -388,7 +363,8 @@ namespace pneuma
                 found.erase(std::remove_if(found.begin(),
                                            found.end(),
                                            [&](const unsigned int m) {
-                                             return m == s || touching(s, m);
+                                             return m == s || touching(s, m)
+                                                    || at_seam(s, m);
                                            }),
                             found.end());
                 // The side of each point to each candidate: 0 (not yet
@@ -778,7 +754,7 @@ namespace pneuma
       // Within the offset of a cell the step did not test.
       for (const unsigned int m : cells_near(tree, enlarged({x, x}, thickest)))
         {
-          if (m == s || touching(s, m)
+          if (m == s || touching(s, m) || at_seam(s, m)
               || (!start && std::binary_search(cand.begin(), cand.end(), m)))
             continue;
           const Projection pm    = project(patches[m], x, 0.);

@@ -103,6 +103,11 @@ namespace pneuma
             s << "4 x the last step's motion, from "
               << contact->search_distance(k) << " m (a quarter of the "
               << "largest cell)";
+          if (const unsigned int n = contact->seam_pairs(k))
+            s << "; " << n
+              << " cell pairs next to a seam start closer than their half "
+                 "thicknesses and are left out of each other's contact, like "
+                 "the cells on the seam";
           model.out() << s.str() << std::endl;
         }
     }

@@ -166,6 +166,13 @@ namespace pneuma
       {
         return cell_of_active;
       }
+      /// The cell pairs of pair @p k left out as part of a seam
+      /// (find_seams()).
+      unsigned int
+      seam_pairs(const unsigned int k) const
+      {
+        return seam_counts[k];
+      }
 
     private:
       /// A cell of a pair's regions, known on every rank.
@@ -217,6 +224,26 @@ namespace pneuma
       /// The sides, slaves and search distance of every pair.
       void
       make_sides();
+      /**
+       * Where two regions meet at a seam at a small angle (a tube sewn
+       * onto another, meeting it tangentially), the cells next to the seam
+       * are closer than their half thicknesses in the reference state,
+       * and the finer the mesh, the more rows of them. A cell pair that
+       * starts that close is left out of each other's contact, like the
+       * cells that share a seam vertex, if it is chained to the seam: the
+       * pair's cells are next to (share a corner with, or are) the cells
+       * of a pair that touches or was left out so. Overlapping cells
+       * elsewhere (two membranes meshed into each other) stay overlapping
+       * and check() refuses them. Sets seam and seam_counts.
+       */
+      void
+      find_seams();
+      /// Is (a, b) a cell pair left out by find_seams()?
+      bool
+      at_seam(const unsigned int a, const unsigned int b) const
+      {
+        return seam.count({std::min(a, b), std::max(a, b)}) > 0;
+      }
       std::vector<MasterPatch>
       current_patches(const LA::Vector *u) const;
       bool
@@ -301,6 +328,10 @@ namespace pneuma
       std::vector<MasterPatch> converged;
       /// (slave cell, master cell) couplings in the sparsity pattern.
       std::set<std::pair<unsigned int, unsigned int>> coupled;
+      /// Cell pairs (smaller index first) next to a seam, left out of the
+      /// contact, and their number per pair.
+      std::set<std::pair<unsigned int, unsigned int>> seam;
+      std::vector<unsigned int>                       seam_counts;
     };
   } // namespace contact
 } // namespace pneuma
