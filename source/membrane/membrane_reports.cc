@@ -113,21 +113,27 @@ namespace pneuma
         }
       std::ostringstream where;
       where << centre;
-      const std::string message =
+      const std::string motion =
         "the membrane is free to move as a rigid body (" + free.str()
-        + "; rotations about its centroid (" + where.str()
-        + ")): add supports (Fixed points, Fixed boundaries, Fixed regions) "
-          "that hold it";
-      // Contact with supported cables may hold it; then it is a warning.
+        + "; rotations about its centroid (" + where.str() + "))";
+      // Contact with supported cables or obstacles may hold it; then it is
+      // a warning.
       const auto holders = model.with<Holds>();
       if (std::any_of(holders.begin(), holders.end(), [this](const Holds *h) {
             return h->holds(*this);
           }))
         {
-          model.out() << "pneuma: warning: " << message << std::endl;
+          model.out() << "pneuma: warning: " << motion
+                      << " until contact holds it: a static stage needs "
+                         "that contact from its first iteration on (Load "
+                         "stepping/Strategy = relaxation finds it)"
+                      << std::endl;
           return;
         }
-      throw InputError("Boundary conditions", message);
+      throw InputError("Boundary conditions",
+                       motion
+                         + ": add supports (Fixed points, Fixed boundaries, "
+                           "Fixed regions) that hold it");
     }
 
     // ------------------------------------------------------------------
