@@ -106,20 +106,20 @@ for scene in "${scenes[@]}"; do
           --set "Chambers/Chamber 3/Gas/Seal time=-1" "${water[@]}"
       done; done ;;
     bending)
-      header "Waterbeam bending, water variant, Q1, Gmsh n = 6 / 12 / 18, to 3 cm"
+      header "Waterbeam bending, water variant, Q1, Gmsh n = 6 / 12 / 18, to 6 cm"
       for n in 6 12 18; do m=$(mesh "$n"); for np in 1 2; do
         run "$np" "n$n" "$root/parameter_files/waterbeam_bending.prm" \
           --set "Geometry/gmsh/Mesh file=$m" \
           --set "Chambers/Chamber 3/Gas/Seal time=2" "${water[@]}"
       done; done ;;
     cables)
-      header "Waterbeam with spiral cables (Figure 11), Q1, Gmsh n = 6 / 9 / 12, to 3 cm"
+      header "Waterbeam with spiral cables (Figure 11), Q1, Gmsh n = 6 / 9 / 12, to 6 cm"
       for n in 6 9 12; do m=$(mesh "$n"); for np in 1 2; do
         run "$np" "n$n" "$root/parameter_files/waterbeam_cables.prm" \
           --set "Geometry/gmsh/Mesh file=$m"
       done; done ;;
     target)
-      header "Waterbeam with spiral cables at the target size: Gmsh n = 26, 250 elements per cable, to 3 cm"
+      header "Waterbeam with spiral cables at the target size: Gmsh n = 26, 250 elements per cable, to 6 cm"
       m=$(mesh 26); for np in 1 2; do
         run "$np" "n26" "$root/parameter_files/waterbeam_cables.prm" \
           --set "Geometry/gmsh/Mesh file=$m" \
