@@ -211,11 +211,6 @@ namespace
     return u;
   }
 
-  bool
-  root()
-  {
-    return Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  }
 
   /// The term's energy over all ranks after an assembly at @p u.
   double
@@ -278,7 +273,7 @@ main(int argc, char **argv)
          && ok;
     // The whole tangent against differences of the residual.
     const double error = sim->check_tangent(0., 0.01, 1e-6).first;
-    if (root())
+    if (pneuma_test::root())
       std::printf("Q1 tangent with the face term vs finite differences: %s\n",
                   error < 1e-6 ? "relative error < 1e-6" : "FAIL");
     ok = error < 1e-6 && ok;
@@ -290,17 +285,17 @@ main(int argc, char **argv)
     pneuma::Model &model = sim->model();
     const double   e     = energy_at(model, term, bent(model, c));
     const bool     zero  = std::abs(e) < 1e-20;
-    if (root())
+    if (pneuma_test::root())
       std::printf("Q2 kink energy of w = c x^2: %s\n",
                   zero ? "zero (< 1e-20)" : "FAIL");
-    if (!zero && root())
+    if (!zero && pneuma_test::root())
       std::printf("  energy %.3e\n", e);
     ok                 = zero && ok;
     const double error = sim->check_tangent(0., 0.01, 1e-6).first;
-    if (root())
+    if (pneuma_test::root())
       std::printf("Q2 tangent with the face term vs finite differences: %s\n",
                   error < 1e-6 ? "relative error < 1e-6" : "FAIL");
-    if (error >= 1e-6 && root())
+    if (error >= 1e-6 && pneuma_test::root())
       std::printf("  relative error %.3e\n", error);
     ok = error < 1e-6 && ok;
   }

@@ -41,11 +41,6 @@
 
 namespace
 {
-  bool
-  root()
-  {
-    return dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  }
 
   /// The plane geotube of circumference L under gamma.
   struct Geotube
@@ -171,7 +166,7 @@ main(int argc, char **argv)
   const auto s = pneuma_test::run(settings);
   if (s.exit_code != 0 || !s.summary.has("obstacle1_force"))
     {
-      if (root())
+      if (pneuma_test::root())
         std::printf("run failed (exit %d): %s\nFAILED\n",
                     s.exit_code,
                     s.message.c_str());
@@ -183,7 +178,7 @@ main(int argc, char **argv)
   const double  head  = level - t / 2.;
   const auto    ref   = g.solve([&](double H) { return gamma * (head - H); });
   const double  p_top = gamma * (head - ref.H);
-  if (root())
+  if (pneuma_test::root())
     std::printf("reference under the head %.4f m: H %.6e m, b %.6e m, "
                 "T %.6e N/m, A %.6e m^2, p_top/(gamma L) %.5f\n",
                 head,
@@ -223,11 +218,11 @@ main(int argc, char **argv)
                            p_top_fe * H + gamma * H * H / 2.,
                            2e-3);
   const double order = pneuma_test::last_step_order(s);
-  if (root())
+  if (pneuma_test::root())
     std::printf("Newton's rate in the last step: %s\n",
                 order > 1.4 ? "superlinear (> 1.4)" : "FAIL");
   ok &= order > 1.4;
-  if (root())
+  if (pneuma_test::root())
     std::printf("%s\n", ok ? "OK" : "FAILED");
   return ok ? 0 : 1;
 }

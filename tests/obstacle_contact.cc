@@ -28,11 +28,6 @@
 
 namespace
 {
-  bool
-  root()
-  {
-    return dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  }
 
   bool
   tangent_check(const unsigned int degree)
@@ -60,12 +55,12 @@ namespace
     const double error =
       pneuma_test::make(settings)->check_tangent(1., 0.02, 1e-7).first;
     const bool pass = error < 1e-6;
-    if (root())
+    if (pneuma_test::root())
       std::printf("tangent vs finite differences, plane, sphere and cylinder, "
                   "degree %u: %s\n",
                   degree,
                   pass ? "relative error < 1e-6" : "FAIL");
-    if (!pass && root())
+    if (!pass && pneuma_test::root())
       std::printf("  relative error %.3e\n", error);
     return pass;
   }
@@ -114,7 +109,7 @@ main(int argc, char **argv)
        {"Load stepping/Extrapolation", "none"}});
   if (s.exit_code != 0 || !s.summary.has("obstacle1_contact_area"))
     {
-      if (root())
+      if (pneuma_test::root())
         std::printf("run failed (exit %d): %s\nFAILED\n",
                     s.exit_code,
                     s.message.c_str());
@@ -166,7 +161,7 @@ main(int argc, char **argv)
   for (unsigned int d = 0; d < 3; ++d)
     imbalance = std::max(imbalance, std::abs(reaction[d] + applied[d]));
   imbalance /= std::abs(f1[2]);
-  if (root())
+  if (pneuma_test::root())
     std::printf("equilibrium: |reaction + applied loads| / plate force %s\n",
                 imbalance < 1e-8 ? "< 1e-8" : "FAIL");
   ok &= imbalance < 1e-8;
@@ -179,11 +174,11 @@ main(int argc, char **argv)
   // Superlinear, not quadratic: where the free arc leaves the plate
   // tangentially, points at g ~ 0 switch in and out of contact in the last
   // iterations, and the penalty's stiffness jumps there (1.5 here).
-  if (root())
+  if (pneuma_test::root())
     std::printf("Newton's rate in the last step: %s\n",
                 order > 1.4 ? "superlinear (> 1.4)" : "FAIL");
   ok &= order > 1.4;
-  if (root())
+  if (pneuma_test::root())
     {
       std::printf("Newton iterations per step:");
       for (const auto n : s.step_iterations)

@@ -38,11 +38,6 @@
 
 namespace
 {
-  bool
-  root()
-  {
-    return dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  }
 
   bool
   tangent_check(const unsigned int degree, const bool friction)
@@ -83,7 +78,7 @@ namespace
     const double error  = check.first;
     const bool   active = std::abs(check.second / bare.second - 1.) > 0.01;
     const bool   pass   = error < 1e-6 && active;
-    if (root())
+    if (pneuma_test::root())
       std::printf("tangent vs finite differences, force-controlled plane%s "
                   "and sphere, degree %u: %s%s\n",
                   friction ? " with friction" : "",
@@ -91,7 +86,7 @@ namespace
                   error < 1e-6 ? "relative error < 1e-6" : "FAIL",
                   active ? ", |J d| changed by > 1 %"
                          : ", FAIL: obstacles not active");
-    if (!pass && root())
+    if (!pass && pneuma_test::root())
       std::printf("  relative error %.3e, |J d| %.3e against %.3e\n",
                   error,
                   check.second,
@@ -110,18 +105,6 @@ namespace
       ->run();
   }
 
-  bool
-  failed(const pneuma::RunResult &s, const char *what)
-  {
-    if (s.exit_code == 0)
-      return false;
-    if (root())
-      std::printf("%s: run failed (exit %d): %s\n",
-                  what,
-                  s.exit_code,
-                  s.message.c_str());
-    return true;
-  }
 
   bool
   tube_pressed()
@@ -129,7 +112,7 @@ namespace
     const double R = 0.2, L = 0.4, t = 1e-3, E = 1e8, nu = 0.3, p = 1e4,
                  F = 600.;
     const auto s   = run_file({});
-    if (failed(s, "force control"))
+    if (pneuma_test::failed(s, "force control"))
       return false;
     bool         ok = true;
     const auto   f1 = s.summary.get_vector("obstacle1_force");
@@ -149,7 +132,7 @@ namespace
        {"Obstacles/Obstacle 2/Control", "displacement"},
        {"Obstacles/Obstacle 2/Displacement/Function expression", ramp(z2)},
        {"Newton/Residual tolerance", "1e-12"}});
-    if (failed(d, "displacement control"))
+    if (pneuma_test::failed(d, "displacement control"))
       return false;
     ok &= pneuma_test::check(
       "force at the plates' positions under displacement control",
@@ -182,14 +165,14 @@ namespace
 
     // (d) Stable and superlinear.
     const bool stable = s.get("negative_eigenvalues") == 0.;
-    if (root())
+    if (pneuma_test::root())
       std::printf("negative eigenvalues of the bordered tangent: %s\n",
                   stable ? "none" : "FAIL");
     const double order = pneuma_test::last_step_order(s);
-    if (root())
+    if (pneuma_test::root())
       std::printf("Newton's rate in the last step: %s\n",
                   order > 1.4 ? "superlinear (> 1.4)" : "FAIL");
-    if (root())
+    if (pneuma_test::root())
       {
         std::printf("Newton iterations per step:");
         for (const auto n : s.step_iterations)
@@ -209,7 +192,7 @@ main(int argc, char **argv)
     ok = tangent_check(degree, false) && ok;
   ok = tangent_check(2, true) && ok;
   ok = tube_pressed() && ok;
-  if (root())
+  if (pneuma_test::root())
     std::printf("%s\n", ok ? "OK" : "FAILED");
   return ok ? 0 : 1;
 }

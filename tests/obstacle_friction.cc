@@ -22,11 +22,6 @@
 
 namespace
 {
-  bool
-  root()
-  {
-    return dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  }
 
   pneuma_test::Settings
   sheet(const unsigned int degree, const std::string &ground)
@@ -58,13 +53,13 @@ namespace
       pneuma_test::make(settings)->check_tangent(1., 2e-6, 1e-9);
     const double change = std::abs(check.second / bare.second - 1.);
     const bool   pass   = check.first < 1e-6 && change > 1e-2;
-    if (root())
+    if (pneuma_test::root())
       std::printf("tangent vs finite differences, %s: %s%s\n",
                   name.c_str(),
                   check.first < 1e-6 ? "relative error < 1e-6" : "FAIL",
                   change > 1e-2 ? ", friction changes |K d| by > 1 %"
                                 : ", FAIL: friction not active");
-    if (!pass && root())
+    if (!pass && pneuma_test::root())
       std::printf("  relative error %.3e, |K d| %.3e, without friction "
                   "%.3e\n",
                   check.first,
@@ -124,7 +119,7 @@ main(int argc, char **argv)
   const auto s = pneuma_test::run(settings);
   if (s.exit_code != 0 || !s.summary.has("obstacle1_friction_force"))
     {
-      if (root())
+      if (pneuma_test::root())
         std::printf("run failed (exit %d): %s\nFAILED\n",
                     s.exit_code,
                     s.message.c_str());
@@ -150,7 +145,7 @@ main(int argc, char **argv)
                            s.get("obstacle1_contact_points"),
                            0.);
   const double order = pneuma_test::last_step_order(s);
-  if (root())
+  if (pneuma_test::root())
     {
       std::printf("Newton's rate in the last step: %s\n",
                   order > 1.4 ? "superlinear (> 1.4)" : "FAIL");
@@ -160,7 +155,7 @@ main(int argc, char **argv)
       std::printf("\n");
     }
   ok &= order > 1.4;
-  if (root())
+  if (pneuma_test::root())
     std::printf("%s\n", ok ? "OK" : "FAILED");
   return ok ? 0 : 1;
 }

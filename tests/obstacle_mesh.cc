@@ -51,11 +51,6 @@
 
 namespace
 {
-  bool
-  root()
-  {
-    return dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  }
 
   std::string
   mesh(const std::string &name)
@@ -116,13 +111,13 @@ namespace
     // The Hessian is 1/r near the ridge: its error is taken times
     // max(|phi|, 1 mm) (relative to a curvature of 1/|phi|).
     const bool ok = gradient_error < 1e-8 && hessian_error < 1e-7 && outside;
-    if (root())
+    if (pneuma_test::root())
       std::printf("wedge: gradient of phi vs differences %s, Hessian %s, "
                   "its sign (inside the wedge or not) %s\n",
                   gradient_error < 1e-8 ? "< 1e-8" : "FAIL",
                   hessian_error < 1e-7 ? "< 1e-7 (x max(|phi|, 1 mm))" : "FAIL",
                   outside ? "right" : "FAIL");
-    if (!ok && root())
+    if (!ok && pneuma_test::root())
       std::printf("  errors %.3e %.3e\n", gradient_error, hessian_error);
     return ok;
   }
@@ -154,7 +149,7 @@ namespace
         flipped &= inside->distance(p).phi == -s.phi;
       }
     const bool ok = error < bound && signs && flipped;
-    if (root())
+    if (pneuma_test::root())
       std::printf("faceted sphere: |phi - (|x| - R)| %s the sagitta bound "
                   "%.1e m, signs %s, Side = inside flips phi %s\n",
                   error < bound ? "<" : "FAIL: >",
@@ -191,14 +186,14 @@ namespace
     const double error  = check.first;
     const bool   active = std::abs(check.second / bare.second - 1.) > 0.01;
     const bool   pass   = error < 1e-6 && active;
-    if (root())
+    if (pneuma_test::root())
       std::printf("tangent vs finite differences, wedge and faceted sphere, "
                   "degree %u: %s%s\n",
                   degree,
                   error < 1e-6 ? "relative error < 1e-6" : "FAIL",
                   active ? ", |K d| changed by > 1 %"
                          : ", FAIL: obstacles not active");
-    if (!pass && root())
+    if (!pass && pneuma_test::root())
       std::printf("  relative error %.3e, |K d| %.3e against %.3e\n",
                   error,
                   check.second,
@@ -254,25 +249,14 @@ namespace
     return pneuma_test::run(settings);
   }
 
-  bool
-  failed(const pneuma::RunResult &s, const char *what)
-  {
-    if (s.exit_code == 0)
-      return false;
-    if (root())
-      std::printf("%s: run failed (exit %d): %s\n",
-                  what,
-                  s.exit_code,
-                  s.message.c_str());
-    return true;
-  }
 
   bool
   slabs_equal_planes()
   {
     const auto planes = tube_between(false);
     const auto slabs  = tube_between(true);
-    if (failed(planes, "planes") || failed(slabs, "slabs"))
+    if (pneuma_test::failed(planes, "planes")
+        || pneuma_test::failed(slabs, "slabs"))
       return false;
     bool ok = true;
     for (const std::string k : {"1", "2"})
@@ -287,7 +271,7 @@ namespace
                                planes.get("obstacle1_" + q),
                                1e-10);
     const bool same_path = slabs.step_iterations == planes.step_iterations;
-    if (root())
+    if (pneuma_test::root())
       std::printf("Newton iterations per step, slabs as planes: %s\n",
                   same_path ? "equal" : "FAIL: different");
     return ok && same_path;
@@ -321,7 +305,7 @@ namespace
                {"Load stepping/Initial increment", "0.1"},
                {"Load stepping/Maximum increment", "0.1"},
                {"Newton/Residual tolerance", "1e-12"}});
-    if (failed(s, "tube in the pipe"))
+    if (pneuma_test::failed(s, "tube in the pipe"))
       return false;
     // The exact polygon: a fixed point for the sides' distance a.
     const double eps = s.get("obstacle1_penalty_min");
@@ -354,14 +338,14 @@ namespace
     const auto   f     = s.summary.get_vector("obstacle1_force");
     const double total = q * lambda * perimeter * L; // the pressure's sum
     const double net   = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
-    if (root())
+    if (pneuma_test::root())
       std::printf("pipe's resultant / the contact pressure's sum: %s\n",
                   net < 1e-9 * total ? "< 1e-9" : "FAIL");
     ok &= net < 1e-9 * total;
     const double smooth_lambda = (r_i - t / 2) / R;
     const double smooth_T =
       c * smooth_lambda * (smooth_lambda * smooth_lambda - 1.) / 2.;
-    if (root())
+    if (pneuma_test::root())
       std::printf("(a smooth pipe of the same inscribed radius: T %.1f N/m, "
                   "%.1f %% lower)\n",
                   smooth_T,
@@ -380,7 +364,7 @@ main(int argc, char **argv)
     ok = tangent_check(degree) && ok;
   ok = slabs_equal_planes() && ok;
   ok = tube_in_pipe() && ok;
-  if (root())
+  if (pneuma_test::root())
     std::printf("%s\n", ok ? "OK" : "FAILED");
   return ok ? 0 : 1;
 }

@@ -34,11 +34,6 @@
 
 namespace
 {
-  bool
-  root()
-  {
-    return dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  }
 
   bool
   tangent_check(const unsigned int degree, const bool self)
@@ -71,14 +66,14 @@ namespace
     const double error  = check.first;
     const bool   active = check.second > 1.5 * bare.second;
     const bool   pass   = error < 1e-6 && active;
-    if (root())
+    if (pneuma_test::root())
       std::printf("tangent vs finite differences, %s, degree %u: %s%s\n",
                   self ? "self-contact" : "two sides",
                   degree,
                   error < 1e-6 ? "relative error < 1e-6" : "FAIL",
                   active ? ", |K d| > 1.5 x the membrane's alone"
                          : ", FAIL: contact not active");
-    if (!pass && root())
+    if (!pass && pneuma_test::root())
       std::printf("  relative error %.3e, |K d| %.3e, without contact %.3e\n",
                   error,
                   check.second,
@@ -138,13 +133,13 @@ namespace
            pneuma_test::number(E)});
       }
     const auto s = pneuma_test::run(settings);
-    if (root())
+    if (pneuma_test::root())
       std::printf("%s:\n",
                   self ? "self-contact of both tubes"
                        : "two sides, tube 1 against tube 2");
     if (s.exit_code != 0 || !s.summary.has("surface1_total_force"))
       {
-        if (root())
+        if (pneuma_test::root())
           std::printf("run failed (exit %d): %s\n",
                       s.exit_code,
                       s.message.c_str());
@@ -206,7 +201,7 @@ namespace
     for (unsigned int k = 1; k + 1 < r.size(); ++k)
       if (r[k + 1] / r[0] > 1e-12 && r[k] / r[0] < 1e-1)
         order = std::log(r[k + 1] / r[0]) / std::log(r[k] / r[0]);
-    if (root())
+    if (pneuma_test::root())
       {
         std::printf("Newton's rate in the last step: %s\n",
                     order > 1.4 ? "superlinear (> 1.4)" : "FAIL");
@@ -229,7 +224,7 @@ main(int argc, char **argv)
       ok = tangent_check(degree, self) && ok;
   for (const bool self : {false, true})
     ok = tubes(self) && ok;
-  if (root())
+  if (pneuma_test::root())
     std::printf("%s\n", ok ? "OK" : "FAILED");
   return ok ? 0 : 1;
 }

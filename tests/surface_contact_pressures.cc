@@ -44,11 +44,6 @@
 
 namespace
 {
-  bool
-  root()
-  {
-    return dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  }
 
   /// The plane-strain reference: two inextensible-in-shape (but stretched)
   /// tubes between two plates at distance D.
@@ -175,7 +170,7 @@ main(int argc, char **argv)
   const auto s = pneuma_test::run(settings);
   if (s.exit_code != 0 || !s.summary.has("surface1_total_force"))
     {
-      if (root())
+      if (pneuma_test::root())
         std::printf("run failed (exit %d): %s\nFAILED\n",
                     s.exit_code,
                     s.message.c_str());
@@ -189,7 +184,7 @@ main(int argc, char **argv)
   const double    R1 = T1 / p1;
   // The interface's top (x = 0) above the lower tube's flat wall.
   const double rise = R1 * (1. + std::cos(b)) + si * (1. - std::cos(b)) / b;
-  if (root())
+  if (pneuma_test::root())
     std::printf("reference: T1 %.5e N/m, T2 %.5e N/m, c1 %.5e m, c2 %.5e m, "
                 "kappa %.5e 1/m, half angle %.5e, q %.5e Pa\n",
                 T1,
@@ -253,11 +248,11 @@ main(int argc, char **argv)
                            1.,
                            1e-2);
   const double order = pneuma_test::last_step_order(s);
-  if (root())
+  if (pneuma_test::root())
     std::printf("Newton's rate in the last step: %s\n",
                 order > 1.4 ? "superlinear (> 1.4)" : "FAIL");
   ok &= order > 1.4;
-  if (root())
+  if (pneuma_test::root())
     {
       std::printf("steps %u, Newton iterations per step:",
                   static_cast<unsigned int>(s.step_iterations.size()));
@@ -265,7 +260,7 @@ main(int argc, char **argv)
         std::printf(" %u", n);
       std::printf("\n");
     }
-  if (root())
+  if (pneuma_test::root())
     std::printf("%s\n", ok ? "OK" : "FAILED");
   return ok ? 0 : 1;
 }

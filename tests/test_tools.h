@@ -103,6 +103,28 @@ namespace pneuma_test
     return s;
   }
 
+  /// Is this rank 0 of MPI_COMM_WORLD (the one that prints)?
+  inline bool
+  root()
+  {
+    return dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  }
+
+  /// Whether the run @p s failed; if so, rank 0 prints "what: run failed
+  /// (exit code): message".
+  inline bool
+  failed(const pneuma::RunResult &s, const std::string &what)
+  {
+    if (s.exit_code == 0)
+      return false;
+    if (root())
+      std::printf("%s: run failed (exit %d): %s\n",
+                  what.c_str(),
+                  s.exit_code,
+                  s.message.c_str());
+    return true;
+  }
+
   /// Run pneuma quietly with @p settings on top of the defaults.
   inline pneuma::RunResult
   run(const Settings &settings, const MPI_Comm comm = MPI_COMM_WORLD)

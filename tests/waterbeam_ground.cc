@@ -61,12 +61,10 @@ main(int argc, char **argv)
                                        + "/meshes/waterbeam.msh"}},
                                    file)
                    ->run();
-  if (s.exit_code != 0)
+  if (pneuma_test::failed(s, "the scene"))
     {
       if (root)
-        std::printf("run failed (exit %d): %s\nFAILED\n",
-                    s.exit_code,
-                    s.message.c_str());
+        std::printf("FAILED\n");
       return 1;
     }
   const auto ground = [&](const double t, const unsigned int d) {

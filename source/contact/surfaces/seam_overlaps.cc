@@ -50,20 +50,17 @@ namespace pneuma
           // The pairs (cell, opposite cell) closer than their offset at a
           // Gauss point, that share no corner.
           std::set<std::pair<unsigned int, unsigned int>> close;
-          for (unsigned int c = 0; c < cells.size(); ++c)
-            for (const bool first : {true, false})
+          for (unsigned int side = 0; side < pairs[k].sides.size(); ++side)
+            for (unsigned int c = 0; c < cells.size(); ++c)
               {
                 const auto id = cells[c].material;
-                if (!(first ? p.on_first(id) : !p.self() && p.on_second(id)))
+                if (!(side == 0 ? p.on_first(id) : p.on_second(id)))
                   continue;
                 for (const unsigned int m :
                      cells_near(tree, enlarged(boxes[c], thickest)))
                   {
-                    const auto other = cells[m].material;
                     if (m == c || touching(c, m)
-                        || !(first && p.self() ? p.on_first(other)
-                             : first           ? p.on_second(other)
-                                               : p.on_first(other)))
+                        || !pairs[k].sides[side].opposite[m])
                       continue;
                     for (const auto &xi : points)
                       {
