@@ -260,6 +260,14 @@ namespace pneuma
           // Reference length and the prestress ratio rho = L_ref / L_0.
           for (const auto &cell : b->tria.active_cell_iterators())
             b->reference_length += cell->diameter();
+          // A section wider than the whole cable is a typing error (and
+          // its contact would search the whole membrane at every point).
+          check_input(std::max(d.section_a, d.section_b) < b->reference_length,
+                      d.path + "/Section semi-axes",
+                      "a semi-axis of "
+                        + std::to_string(std::max(d.section_a, d.section_b))
+                        + " m is not below the cable's length "
+                        + std::to_string(b->reference_length) + " m");
           const double EA = d.youngs_modulus * d.area();
           if (d.prestress_force > 0.)
             b->rho = 1. + staged_prestress(d, 0.) / EA;
