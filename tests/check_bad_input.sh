@@ -78,6 +78,11 @@ check "$dir/valid.prm"              1 "Materials/Heating: unknown subsection" --
 check "$dir/valid.prm"              1 "Materials/Region 0/Saint Venant-Kirchhoff/Poisson's ratio: must lie in (-1, 0.5)" --set "Materials/Region 0/Saint Venant-Kirchhoff/Poisson's ratio=-1"
 check "$dir/valid.prm"              1 "Materials/Region 0/Wrinkling residual stiffness: must be below 1e-2" --set "Materials/Region 0/Wrinkling=tension field" --set "Materials/Region 0/Wrinkling residual stiffness=0.5"
 check "$dir/valid.prm"              1 "Materials/Region 0/Wrinkling smoothing: The string <-1e-5> does not match" --set "Materials/Region 0/Wrinkling=tension field" --set "Materials/Region 0/Wrinkling smoothing=-1e-5"
+check "$dir/valid.prm"              1 "Materials/Region 0/Bending stiffness factor: must be positive" --set "Materials/Region 0/Bending=shell" --set "Materials/Region 0/Bending stiffness factor=0"
+check "$dir/valid.prm"              1 "Bending/Interior penalty factor: must be positive" --set "Materials/Region 0/Bending=shell" --set "Bending/Interior penalty factor=-1"
+check "$dir/valid.prm"              1 "Bending/Clamped boundaries: the mesh has no boundary 7" --set "Materials/Region 0/Bending=shell" --set "Bending/Clamped boundaries=7"
+check "$dir/valid.prm"              1 "Bending/Clamped boundaries: no region is a shell" --set "Bending/Clamped boundaries=0"
+check "$dir/../tensairity_friction.prm" 1 "Cables/Cable 2/Section semi-axes: a semi-axis of" --set "Cables/Cable 2/Section semi-axes=4294967297" --set "Output/Directory=out_bad"
 check "$dir/valid.prm"              1 "Materials/Region 0/Warp direction: must be a non-zero vector" --set "Materials/Region 0/Warp direction=1, x, 0"
 check "$dir/valid.prm"              1 "Materials/Region 0/Warp direction: the law 'orthotropic' is anisotropic" --set "Materials/Region 0/Law=orthotropic"
 check "$dir/valid.prm"              1 "Materials/Region 0/Warp direction: it is within 6 degrees of the surface normal" --set "Materials/Region 0/Law=orthotropic" --set "Materials/Region 0/Warp direction=0, 0, 1"
@@ -87,6 +92,7 @@ check "$dir/valid.prm"              1 "Materials/Region 0/orthotropic/Poisson's 
 # iteration that runs out of updates (exit 2, the last shape written).
 check "$dir/valid.prm"              1 "Discretisation/Polynomial degree: form finding needs degree 2" --set "Form finding/Enabled=true"
 check_mpi "$dir/valid.prm"          1 "Materials/Region 0/Prestress: form finding needs a positive prestress" --set "Form finding/Enabled=true" --set "Discretisation/Polynomial degree=2"
+check "$dir/valid.prm"              1 "Materials/Region 0/Bending: form finding finds the shape of a membrane" --set "Form finding/Enabled=true" --set "Discretisation/Polynomial degree=2" --set "Materials/Region 0/Prestress=100" --set "Materials/Region 0/Bending=shell"
 check "$dir/valid.prm"              1 "Form finding/Homotopy factor: must be in [0, 1)" --set "Form finding/Homotopy factor=1"
 check "$dir/valid.prm"              2 "the form finding did not converge in 2 updates" --set "Geometry/Type=open cylinder" --set "Boundary conditions/Fixed boundaries=0: xyz; 1: xyz" --set "Form finding/Enabled=true" --set "Discretisation/Polynomial degree=2" --set "Materials/Region 0/Prestress=100" --set "Form finding/Maximum updates=2"
 # Dynamic relaxation: tolerances out of range, a mass below Gershgorin's

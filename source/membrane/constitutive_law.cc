@@ -72,6 +72,24 @@ namespace pneuma
             "changes; the stress of a taut point changes by about "
             "(zeta/strain)^2 of itself. 0: the exact relaxed energy.",
             Patterns::Double(0., 1e-2));
+          add_selection(
+            prm,
+            "Bending",
+            slot->bending,
+            {{"none", false}, {"shell", true}},
+            "none: a membrane (no bending stiffness); shell: a "
+            "Kirchhoff-Love shell, the membrane law plus the bending "
+            "energy of the change of curvature with D = t^3/12 dS/dE of the "
+            "law at zero strain (section Bending, doc/theory.md 21). With "
+            "Wrinkling = tension field and a small Bending stiffness factor "
+            "it is a wrinkling wall that keeps some bending stiffness (a "
+            "regulariser of crumpled and slack states).");
+          prm.add_parameter(
+            "Bending stiffness factor",
+            slot->bending_factor,
+            "Factor on the shell's bending stiffness t^3/12 dS/dE: 1 for the "
+            "wall's own bending, below 1 for bending as a regulariser; > 0.",
+            Patterns::Double());
           prm.add_parameter(
             "Warp direction",
             slot->warp_direction,
@@ -199,6 +217,15 @@ namespace pneuma
               m.tension_field = relaxed;
               m.law           = relaxed;
             }
+          if (slot->bending)
+            {
+              check_input(std::isfinite(slot->bending_factor)
+                            && slot->bending_factor > 0.,
+                          path + "/Bending stiffness factor",
+                          "must be positive, got "
+                            + std::to_string(slot->bending_factor));
+              m.bending_factor = slot->bending_factor;
+            }
           regions[slot->id] = m;
         }
       prm.leave_subsection();
@@ -229,6 +256,15 @@ namespace pneuma
     {
       for (const auto &[id, m] : regions)
         if (m.tension_field)
+          return true;
+      return false;
+    }
+
+    bool
+    MaterialRegions::any_bending() const
+    {
+      for (const auto &[id, m] : regions)
+        if (m.bending_factor > 0.)
           return true;
       return false;
     }

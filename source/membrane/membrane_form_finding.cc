@@ -137,6 +137,11 @@ namespace pneuma
                       path + "/Prestress",
                       "form finding needs a positive prestress in every "
                       "region (the membrane forces of the shape to find)");
+          check_input(m.bending_factor == 0.,
+                      path + "/Bending",
+                      "form finding finds the shape of a membrane under its "
+                      "prestress; a shell's bending would resist the "
+                      "search (set Bending = none)");
           check_input(lambda == 0. || n1 == n2,
                       "Form finding/Homotopy factor",
                       "must be 0 where the prestress is anisotropic (" + path

@@ -102,8 +102,10 @@ namespace pneuma
                               names,
                               DataOut<2, 3>::type_dof_data,
                               interpretation);
-      const postprocess::CellFields fields = postprocess::membrane_cell_fields(
+      postprocess::CellFields fields = postprocess::membrane_cell_fields(
         *mapping_cache, dofs, materials, scene, field);
+      if (shell)
+        shell->cell_fields(field, fields.names, fields.values);
       output_cell_data.clear();
       output_cell_data.reserve(fields.names.size() + 1);
       for (unsigned int i = 0; i < fields.names.size(); ++i)

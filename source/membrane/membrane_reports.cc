@@ -33,6 +33,37 @@ namespace pneuma
 {
   namespace membrane
   {
+    namespace
+    {
+      /// The rigid motions of the eigenvectors @p vectors of the zero
+      /// eigenvalues @p values (translations, then rotations), by their
+      /// leading terms.
+      std::string
+      describe_motions(const Vector<double>     &values,
+                       const FullMatrix<double> &vectors)
+      {
+        const char        *names[6] = {"translation along x",
+                                       "translation along y",
+                                       "translation along z",
+                                       "rotation about x",
+                                       "rotation about y",
+                                       "rotation about z"};
+        std::ostringstream free;
+        for (unsigned int m = 0; m < values.size(); ++m)
+          {
+            free << (m ? "; " : "");
+            bool first = true;
+            for (unsigned int j = 0; j < 6; ++j)
+              if (std::abs(vectors(j, m)) > 0.3)
+                {
+                  free << (first ? "" : " + ") << names[j];
+                  first = false;
+                }
+          }
+        return free.str();
+      }
+    } // namespace
+
     void
     MembraneSubsystem::check_well_posed() const
     {
@@ -74,6 +105,12 @@ namespace pneuma
                     G(j, k) += row[j] * row[k];
               }
         }
+      // A clamped shell edge holds the rotations about its direction.
+      if (shell)
+        for (const auto &a : shell->clamped_axes())
+          for (unsigned int j = 0; j < 3; ++j)
+            for (unsigned int k = 0; k < 3; ++k)
+              G(3 + j, 3 + k) += a[j] * a[k];
       double trace = 0.;
       for (unsigned int j = 0; j < 6; ++j)
         for (unsigned int k = 0; k < 6; ++k)
@@ -93,29 +130,13 @@ namespace pneuma
         -1., 1e-10 * std::max(trace, 1.), 1e-14, values, vectors);
       if (values.size() == 0)
         return;
-      const char        *names[6] = {"translation along x",
-                                     "translation along y",
-                                     "translation along z",
-                                     "rotation about x",
-                                     "rotation about y",
-                                     "rotation about z"};
-      std::ostringstream free;
-      for (unsigned int m = 0; m < values.size(); ++m)
-        {
-          free << (m ? "; " : "");
-          bool first = true;
-          for (unsigned int j = 0; j < 6; ++j)
-            if (std::abs(vectors(j, m)) > 0.3)
-              {
-                free << (first ? "" : " + ") << names[j];
-                first = false;
-              }
-        }
       std::ostringstream where;
       where << centre;
-      const std::string motion =
-        "the membrane is free to move as a rigid body (" + free.str()
-        + "; rotations about its centroid (" + where.str() + "))";
+      const std::string motion = "the membrane is free to move as a rigid "
+                                 "body ("
+                                 + describe_motions(values, vectors)
+                                 + "; rotations about its centroid ("
+                                 + where.str() + "))";
       // Contact with supported cables or obstacles may hold it; then it is
       // a warning.
       const auto holders = model.with<Holds>();
@@ -305,6 +326,13 @@ namespace pneuma
       statistics.add_vector(run, "reaction", "N", reaction, Statistics::report);
       statistics.add_vector(
         run, "applied_load", "N", applied, Statistics::report);
+      // The shells' bending energy at that assembly (the field's).
+      if (shell)
+        statistics.add(run,
+                       "bending_energy",
+                       "J",
+                       Utilities::MPI::sum(shell->energy(), comm),
+                       Statistics::report);
       if (statistics.is_summary())
         {
           statistics.add_count(run,

@@ -69,6 +69,7 @@ namespace pneuma
       scene.declare_parameters(prm);
       adaptive.declare_parameters(prm);
       materials.declare_parameters(prm, layout);
+      bending::Parameters::declare(prm);
       boundary_conditions.declare_parameters(prm);
       rigid_regions.declare_parameters(prm);
       prm.enter_subsection("Output");
@@ -97,6 +98,16 @@ namespace pneuma
       scene.parse_parameters(prm);
       adaptive.parse_parameters(prm);
       materials.parse_parameters(prm);
+      bending_parameters.parse(prm);
+      // Shell regions add their bending to the cell and edge loops (before
+      // the setup: the edges' couplings enter the sparsity pattern).
+      if (materials.any_bending() && !shell)
+        {
+          shell =
+            std::make_unique<bending::ShellBending>(*this, bending_parameters);
+          add_cell_terms(shell->cell_terms());
+          add_face_terms(shell->face_terms());
+        }
       boundary_conditions.parse_parameters(prm);
       rigid_regions.parse_parameters(prm);
       prm.enter_subsection("Output");
@@ -259,6 +270,20 @@ namespace pneuma
         std::make_unique<MembraneAssembler>(scene, materials, model.loads());
       assembler->reinit(*mapping_cache, dofs, fe_degree);
       boundary_conditions.check_against_mesh(dofs);
+      if (!bending_parameters.clamped.empty())
+        {
+          check_input(shell != nullptr,
+                      "Bending/Clamped boundaries",
+                      "no region is a shell (Materials/Region k/Bending = "
+                      "shell): a membrane has no rotations to clamp");
+          const auto ids = mesh.get_boundary_ids();
+          for (const auto b : bending_parameters.clamped)
+            check_input(std::find(ids.begin(), ids.end(), b) != ids.end(),
+                        "Bending/Clamped boundaries",
+                        "the mesh has no boundary " + std::to_string(b));
+        }
+      if (shell)
+        model.out() << shell->description(fe_degree) << std::endl;
       prestress_force = prestress_force_scale();
       // The loads at the start: finite at every cell centre (and line-load
       // edge) of the reference surface, on every rank alike.

@@ -126,6 +126,9 @@ namespace pneuma
       /// The prestress n_1, n_2 [N/m] along warp and fill (also the target
       /// of form finding).
       std::array<double, 2> prestress{{0., 0.}};
+      /// Bending = shell: the factor on the bending stiffness t^3/12 dS/dE
+      /// (membrane/bending/shell_bending.h); 0: a membrane.
+      double bending_factor = 0.;
     };
 
     /**
@@ -155,6 +158,9 @@ namespace pneuma
       /// Whether any region wrinkles (tension field theory).
       bool
       any_wrinkling() const;
+      /// Whether any region is a shell (has bending).
+      bool
+      any_bending() const;
 
     private:
       /// One declared region: bound values and every law's constants.
@@ -170,6 +176,9 @@ namespace pneuma
         std::string prestress          = "0";
         double      residual_stiffness = 1e-6;
         double      smoothing          = 0.;
+        /// Bending: none (false) or shell (true), and its factor.
+        bool   bending        = false;
+        double bending_factor = 1.;
         std::map<std::string, std::unique_ptr<ConstitutiveLaw>> laws;
       };
       std::vector<std::unique_ptr<Slot>>                   slots;

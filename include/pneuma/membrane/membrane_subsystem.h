@@ -29,6 +29,7 @@
 #include <pneuma/geometry/scene_generator.h>
 #include <pneuma/loads/boundary_conditions.h>
 #include <pneuma/loads/rigid_regions.h>
+#include <pneuma/membrane/bending/shell_bending.h>
 #include <pneuma/membrane/constitutive_law.h>
 #include <pneuma/membrane/face_terms.h>
 #include <pneuma/membrane/membrane_assembler.h>
@@ -214,6 +215,13 @@ namespace pneuma
       {
         return mesh_ids;
       }
+      /// The shells' bending energy of this rank at the last assembly (0
+      /// without shell regions).
+      double
+      bending_energy() const
+      {
+        return shell ? shell->energy() : 0.;
+      }
       /// The membrane's VTU of the current output (between
       /// add_output_fields and write_output_files).
       DataOut<2, 3> &
@@ -331,7 +339,10 @@ namespace pneuma
       std::unique_ptr<MembraneAssembler>         assembler;
       std::vector<CellTerms *>                   cell_terms;
       std::vector<FaceTerms *>                   face_terms;
-      double                                     reference_volume = 0.;
+      /// The shells' bending (regions with Bending = shell), its section.
+      bending::Parameters                    bending_parameters;
+      std::unique_ptr<bending::ShellBending> shell;
+      double                                 reference_volume = 0.;
       /// Form finding: on, its force scale, the displacement of the
       /// reference from the input's surface (ghosted) and its updates.
       bool                                            form_finding    = false;

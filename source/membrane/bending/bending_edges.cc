@@ -1,0 +1,333 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <pneuma/membrane/bending/bending_edges.h>
+#include <pneuma/membrane/bending/point_geometry.h>
+#include <pneuma/membrane/bending/sacado_energy.h>
+#include <pneuma/membrane/membrane_subsystem.h>
+
+#include <type_traits>
+
+namespace pneuma
+{
+  namespace membrane
+  {
+    namespace bending
+    {
+      namespace
+      {
+        using DofIndex =
+          std::array<std::array<unsigned int, 3>, max_cell_nodes>;
+
+        struct EdgeScratch : FaceTerms::Scratch
+        {
+          EdgeScratch(const MembraneSubsystem &membrane)
+            : base(membrane.dof_handler().get_fe().base_element(0))
+            , nodes{{NodePositions(membrane.mapping(), base),
+                     NodePositions(membrane.mapping(), base)}}
+            , dof(node_dofs(membrane.dof_handler().get_fe()))
+            , degree(membrane.degree())
+            , edge(degree + 1)
+            , cell(degree + 1)
+          {
+          }
+          const FiniteElement<2, 3>              &base;
+          std::array<NodePositions, 2>            nodes;
+          DofIndex                                dof;
+          unsigned int                            degree;
+          QGauss<1>                               edge;
+          QGauss<2>                               cell;
+          std::array<std::vector<Vec<double>>, 2> X, x;
+          std::array<double, 30 * 30>             hessian;
+        };
+
+        struct EdgeRecord : FaceTerms::Record
+        {
+          double energy = 0.;
+        };
+
+        Vec<double>
+        warp_of(const ShellContext                           &context,
+                const DoFHandler<2, 3>::active_cell_iterator &cell)
+        {
+          const Tensor<1, 3> w =
+            context.membrane->material_regions()[cell->material_id()].warp(
+              context.membrane->geometry(), cell);
+          return {{w[0], w[1], w[2]}};
+        }
+
+        /// Area of the cell with nodes @p X over the length of its face
+        /// @p face: the cell's size across the edge.
+        double
+        size_across(const EdgeScratch              &s,
+                    const std::vector<Vec<double>> &X,
+                    const unsigned int              face)
+        {
+          double area = 0., length = 0., G[15];
+          for (unsigned int q = 0; q < s.cell.size(); ++q)
+            {
+              point_derivatives(X,
+                                shape_derivatives(s.base, s.cell.point(q)),
+                                G);
+              const Vec<double> m = cross(part(G, 0), part(G, 1));
+              area += std::sqrt(dot(m, m)) * s.cell.weight(q);
+            }
+          const auto t = face_direction(face);
+          for (unsigned int q = 0; q < s.edge.size(); ++q)
+            {
+              point_derivatives(
+                X,
+                shape_derivatives(s.base, face_point(face, s.edge.point(q)[0])),
+                G);
+              Vec<double> T;
+              for (unsigned int c = 0; c < 3; ++c)
+                T[c] = t[0] * G[c] + t[1] * G[3 + c];
+              length += std::sqrt(dot(T, T)) * s.edge.weight(q);
+            }
+          return area / length;
+        }
+
+        /**
+         * The reference data of edge point @p xi0 on face @p face of the
+         * first cell (nodes s.X[0], stiffness k0): its frame, the edge's
+         * oriented parametric direction, conormal and weight; the second
+         * side's part is filled by the caller. Returns the point's
+         * reference normal.
+         */
+        Vec<double>
+        first_side(const EdgeScratch      &s,
+                   const unsigned int      face,
+                   const double            weight,
+                   const ShapeDerivatives &shape,
+                   const Vec<double>      &warp,
+                   const RegionStiffness  &k0,
+                   EdgeFrame              &e,
+                   Vec<double>            &nu,
+                   Vec<double>            &T)
+        {
+          double G[15];
+          point_derivatives(s.X[0], shape, G);
+          const ReferencePoint ref = reference_point(G, warp, k0.D, 1.);
+          const auto           t   = face_direction(face);
+          const auto           o   = face_outward(face);
+          Vec<double>          out;
+          for (unsigned int c = 0; c < 3; ++c)
+            {
+              T[c]   = t[0] * G[c] + t[1] * G[3 + c];
+              out[c] = o[0] * G[c] + o[1] * G[3 + c];
+            }
+          nu = normalized(cross(T, ref.N));
+          if (dot(nu, out) < 0.)
+            for (auto &v : nu)
+              v = -v;
+          const double sigma = dot(cross(nu, ref.N), T) > 0. ? 1. : -1.;
+          e.tangent[0]       = sigma * t[0];
+          e.tangent[1]       = sigma * t[1];
+          for (unsigned int c = 0; c < 3; ++c)
+            T[c] *= sigma;
+          e.side[0]  = ref.frame;
+          e.nu[0][0] = dot(nu, ref.E1);
+          e.nu[0][1] = dot(nu, ref.E2);
+          e.JxW      = std::sqrt(dot(T, T)) * weight;
+          return ref.N;
+        }
+
+        /// Gather the current nodes of side @p side from @p local_u.
+        void
+        current_nodes(EdgeScratch               &s,
+                      const unsigned int         side,
+                      const DofIndex            &index,
+                      const std::vector<double> &local_u)
+        {
+          s.x[side] = s.X[side];
+          for (unsigned int a = 0; a < s.x[side].size(); ++a)
+            for (unsigned int c = 0; c < 3; ++c)
+              s.x[side][a][c] += local_u[index[a][c]];
+        }
+      } // namespace
+
+      BendingEdges::BendingEdges(const ShellContext &context)
+        : context(context)
+      {
+      }
+
+      unsigned int
+      BendingEdges::n_quadrature_points() const
+      {
+        return context.membrane->degree() + 1;
+      }
+
+      void
+      BendingEdges::begin(const Assembly &)
+      {
+        sum = 0.;
+      }
+
+      std::unique_ptr<FaceTerms::Scratch>
+      BendingEdges::new_scratch() const
+      {
+        return std::make_unique<EdgeScratch>(*context.membrane);
+      }
+
+      std::unique_ptr<FaceTerms::Record>
+      BendingEdges::new_record() const
+      {
+        return std::make_unique<EdgeRecord>();
+      }
+
+      void
+      BendingEdges::interior_face(const FEInterfaceValues<2, 3> &fiv,
+                                  const std::vector<double>     &local_u,
+                                  FullMatrix<double>            *matrix,
+                                  Vector<double>                *residual,
+                                  FaceTerms::Scratch            &scratch_data,
+                                  FaceTerms::Record &record_data) const
+      {
+        auto &record  = static_cast<EdgeRecord &>(record_data);
+        record.energy = 0.;
+        std::array<DoFHandler<2, 3>::active_cell_iterator, 2> cell;
+        std::array<unsigned int, 2>                           face;
+        std::array<const RegionStiffness *, 2>                k;
+        for (unsigned int i = 0; i < 2; ++i)
+          {
+            const auto &fv = fiv.get_fe_face_values(i);
+            cell[i]        = DoFHandler<2, 3>::active_cell_iterator(
+              &context.membrane->triangulation(),
+              fv.get_cell()->level(),
+              fv.get_cell()->index(),
+              &context.membrane->dof_handler());
+            face[i] = fv.get_face_number();
+            k[i]    = context.of(cell[i]->material_id());
+          }
+        if (!k[0] || !k[1])
+          return;
+        auto                   &s  = static_cast<EdgeScratch &>(scratch_data);
+        const auto             &fe = context.membrane->dof_handler().get_fe();
+        std::array<DofIndex, 2> index{};
+        for (unsigned int i = 0; i < fiv.n_current_interface_dofs(); ++i)
+          {
+            const auto local = fiv.interface_dof_to_dof_indices(i);
+            for (unsigned int side = 0; side < 2; ++side)
+              if (local[side] != numbers::invalid_unsigned_int)
+                {
+                  const auto [c, a] = fe.system_to_component_index(local[side]);
+                  index[side][a][c] = i;
+                }
+          }
+        std::array<Vec<double>, 2> warp;
+        for (unsigned int side = 0; side < 2; ++side)
+          {
+            s.X[side] = s.nodes[side].of(cell[side]);
+            current_nodes(s, side, index[side], local_u);
+            warp[side] = warp_of(context, cell[side]);
+          }
+        const double h = std::min(size_across(s, s.X[0], face[0]),
+                                  size_across(s, s.X[1], face[1]));
+        EdgeFrame    e;
+        e.penalty = context.parameters.gamma(s.degree)
+                    * std::max(k[0]->largest, k[1]->largest) / h;
+        for (unsigned int q = 0; q < s.edge.size(); ++q)
+          {
+            std::array<ShapeDerivatives, 2> shape;
+            shape[0] =
+              shape_derivatives(s.base,
+                                face_point(face[0], s.edge.point(q)[0]));
+            Vec<double>       nu, T;
+            const Vec<double> N0 = first_side(
+              s, face[0], s.edge.weight(q), shape[0], warp[0], *k[0], e, nu, T);
+            // The same point on the second cell's face.
+            const Point<2> xi1 =
+              locate_on_face(s.base,
+                             s.X[1],
+                             face[1],
+                             position(s.base,
+                                      s.X[0],
+                                      face_point(face[0], s.edge.point(q)[0])));
+            shape[1] = shape_derivatives(s.base, xi1);
+            double G1[15];
+            point_derivatives(s.X[1], shape[1], G1);
+            const Vec<double> N1 = reference_point(G1, warp[1], k[1]->D, 1.).N;
+            const double      sign = dot(N0, N1) >= 0. ? 1. : -1.;
+            const ReferencePoint ref1 =
+              reference_point(G1, warp[1], k[1]->D, sign);
+            e.side[1]             = ref1.frame;
+            const Vec<double> nu1 = normalized(cross(T, ref1.N));
+            e.nu[1][0]            = dot(nu1, ref1.E1);
+            e.nu[1][1]            = dot(nu1, ref1.E2);
+            Vec<double> N1s;
+            for (unsigned int c = 0; c < 3; ++c)
+              N1s[c] = sign * N1[c];
+            e.Theta = turn_angle(N0, N1s, normalized(T));
+            double g[30], gradient[30];
+            point_derivatives(s.x[0], shape[0], g);
+            point_derivatives(s.x[1], shape[1], g + 15);
+            const auto energy = [&](auto *v) {
+              using Number = std::decay_t<decltype(*v)>;
+              Number en    = interior_edge_energy(v, e);
+              return en;
+            };
+            record.energy += differentiate<30>(
+              g, energy, gradient, matrix ? s.hessian.data() : nullptr);
+            add_point_terms(2,
+                            shape.data(),
+                            index.data(),
+                            gradient,
+                            s.hessian.data(),
+                            residual,
+                            matrix);
+          }
+      }
+
+      void
+      BendingEdges::boundary_face(
+        const DoFHandler<2, 3>::active_cell_iterator &cell,
+        const unsigned int                            face,
+        const FEFaceValues<2, 3> &,
+        const std::vector<double> &local_u,
+        FullMatrix<double>        *matrix,
+        Vector<double>            *residual,
+        FaceTerms::Scratch        &scratch_data,
+        FaceTerms::Record         &record_data) const
+      {
+        auto &record             = static_cast<EdgeRecord &>(record_data);
+        record.energy            = 0.;
+        const RegionStiffness *k = context.of(cell->material_id());
+        if (!k
+            || !context.parameters.clamped.count(
+              cell->face(face)->boundary_id()))
+          return;
+        auto &s = static_cast<EdgeScratch &>(scratch_data);
+        s.X[0]  = s.nodes[0].of(cell);
+        current_nodes(s, 0, s.dof, local_u);
+        const Vec<double> warp = warp_of(context, cell);
+        EdgeFrame         e;
+        e.penalty = context.parameters.gamma(s.degree) * k->largest
+                    / size_across(s, s.X[0], face);
+        for (unsigned int q = 0; q < s.edge.size(); ++q)
+          {
+            const ShapeDerivatives shape =
+              shape_derivatives(s.base, face_point(face, s.edge.point(q)[0]));
+            Vec<double>       nu, T;
+            const Vec<double> N =
+              first_side(s, face, s.edge.weight(q), shape, warp, *k, e, nu, T);
+            double g[15], gradient[15];
+            point_derivatives(s.x[0], shape, g);
+            const auto energy = [&](auto *v) {
+              using Number = std::decay_t<decltype(*v)>;
+              Number en    = clamped_edge_energy(v, e, N);
+              return en;
+            };
+            record.energy += differentiate<15>(
+              g, energy, gradient, matrix ? s.hessian.data() : nullptr);
+            add_point_terms(
+              1, &shape, &s.dof, gradient, s.hessian.data(), residual, matrix);
+          }
+      }
+
+      void
+      BendingEdges::commit(const FaceTerms::Record &record)
+      {
+        sum += static_cast<const EdgeRecord &>(record).energy;
+      }
+    } // namespace bending
+  }   // namespace membrane
+} // namespace pneuma
