@@ -15,7 +15,8 @@
 //   by Runge-Kutta shooting) and its bending energy against EI/2 int
 //   theta'^2 ds, and Newton's rate in the last step; on Q1 cells (the
 //   bending in the kinks between cells, gamma = 1) its first-order
-//   convergence.
+//   convergence; with an orthotropic law whose fill (E2 = E1/2) runs
+//   along the strip, the elastica of P L^2/(E2 I) = 4.
 // The same on 2 ranks.
 
 #include "test_tools.h"
@@ -228,6 +229,28 @@ main(int argc, char **argv)
                   order,
                   order > 0.8 ? "first order" : "FAIL");
     ok = order > 0.8 && ok;
+  }
+  // Orthotropic bending: the fill (E2 = E1/2) along the strip, so
+  // P L^2/(E2 I) = 4.
+  {
+    auto settings = cantilever(2, 1, P);
+    settings.insert(settings.end(),
+                    {{"Materials/Region 0/Law", "orthotropic"},
+                     {"Materials/Region 0/Warp direction", "0, 1, 0"},
+                     {"Materials/Region 0/orthotropic/Warp modulus", "1e9"},
+                     {"Materials/Region 0/orthotropic/Fill modulus", "5e8"},
+                     {"Materials/Region 0/orthotropic/Poisson's ratio", "0"},
+                     {"Materials/Region 0/orthotropic/Shear modulus", "1e8"}});
+    const auto s = pneuma_test::run(settings);
+    if (pneuma_test::failed(s, "orthotropic cantilever"))
+      return 1;
+    ok = pneuma_test::check(
+           "orthotropic cantilever (fill along it), 20 x 2 cells: tip "
+           "across [m]",
+           s.get("m0_u_z"),
+           elastica(4.)[1],
+           5e-3)
+         && ok;
   }
   if (pneuma_test::root())
     std::printf("%s\n", ok ? "OK" : "FAILED");
