@@ -41,9 +41,8 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool                               root =
-    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  const std::string file =
+  const bool                               root = pneuma_test::root();
+  const std::string                        file =
     std::string(PNEUMA_SOURCE_DIR) + "/parameter_files/tube_pinched.prm";
   const pneuma_test::Settings common = {
     {"Output/Quiet", "true"},

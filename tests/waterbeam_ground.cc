@@ -49,9 +49,8 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool                               root =
-    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  const std::string file =
+  const bool                               root = pneuma_test::root();
+  const std::string                        file =
     std::string(PNEUMA_SOURCE_DIR) + "/parameter_files/waterbeam_ground.prm";
   const auto s = pneuma_test::make({{"Output/Quiet", "true"},
                                     {"Output/Write VTU", "false"},

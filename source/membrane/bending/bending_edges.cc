@@ -245,8 +245,9 @@ namespace pneuma
             shape[1] = shape_derivatives(s.base, xi1);
             double G1[15];
             point_derivatives(s.X[1], shape[1], G1);
-            const Vec<double> N1 = reference_point(G1, warp[1], k[1]->D, 1.).N;
-            const double      sign = dot(N0, N1) >= 0. ? 1. : -1.;
+            // The second cell's normal on the first one's side.
+            const Vec<double>    N1   = unit_normal(G1);
+            const double         sign = dot(N0, N1) >= 0. ? 1. : -1.;
             const ReferencePoint ref1 =
               reference_point(G1, warp[1], k[1]->D, sign);
             e.side[1]             = ref1.frame;

@@ -82,12 +82,7 @@ namespace pneuma
         return r;
       }
 
-      /// The slot of g holding x_,alpha (alpha = 0, 1) or x_,alpha beta.
-      inline unsigned int
-      slot(const unsigned int alpha)
-      {
-        return alpha;
-      }
+      /// The slot of g holding x_,alpha beta (x_,alpha is slot alpha).
       inline unsigned int
       slot(const unsigned int alpha, const unsigned int beta)
       {
