@@ -173,6 +173,7 @@ namespace pneuma
       , gravity_function(std::make_unique<Functions::ParsedFunction<3>>(3))
       , surface_function(std::make_unique<Functions::ParsedFunction<3>>(3))
       , line_function(std::make_unique<Functions::ParsedFunction<3>>(3))
+      , point_function(std::make_unique<Functions::ParsedFunction<3>>(3))
     {
     }
 
@@ -204,6 +205,14 @@ namespace pneuma
                         "Boundary ids carrying the dead line load.",
                         Patterns::List(Patterns::Integer(0)));
       declare_function(prm, "Line load", 3, "0; 0; 0");
+      prm.add_parameter("Point loads",
+                        point_loads_text,
+                        "Points 'x, y, z; x, y, z; ...' [m] carrying the dead "
+                        "force 'Point load' [N] of (x, y, z, t) evaluated at "
+                        "each point (e.g. 'if(x > 0, 1, -1)*t; 0; 0'), applied "
+                        "at the membrane vertex nearest to it (a pinching "
+                        "force on a shell; on a membrane it is singular).");
+      declare_function(prm, "Point load", 3, "0; 0; 0");
       prm.leave_subsection();
     }
 
@@ -259,6 +268,12 @@ namespace pneuma
         parse_id_list(line_load_text, "Loads/Line load boundaries");
       line_load_ids = std::set<types::boundary_id>(ll.begin(), ll.end());
       parse_function(prm, *line_function, "Line load", "Loads/Line load");
+      point_points.clear();
+      for (const auto &item :
+           Utilities::split_string_list(point_loads_text, ';'))
+        if (!item.empty())
+          point_points.push_back(parse_point(item, "Loads/Point loads"));
+      parse_function(prm, *point_function, "Point load", "Loads/Point load");
       prm.leave_subsection();
     }
 
@@ -278,6 +293,8 @@ namespace pneuma
         error = check(*surface_function, points, "Loads/Surface traction");
       if (error.empty())
         error = check(*line_function, line_points, "Loads/Line load");
+      if (error.empty())
+        error = check(*point_function, point_points, "Loads/Point load");
       return error;
     }
 
@@ -287,7 +304,8 @@ namespace pneuma
       for (auto *f : {pressure_function.get(),
                       gravity_function.get(),
                       surface_function.get(),
-                      line_function.get()})
+                      line_function.get(),
+                      point_function.get()})
         if (f->get_time() != t)
           f->set_time(t);
     }
@@ -347,6 +365,12 @@ namespace pneuma
     Loads::line_load(const Point<3> &x, const double t) const
     {
       return vector_value(*line_function, x, t);
+    }
+
+    Tensor<1, 3>
+    Loads::point_load(const Point<3> &x, const double t) const
+    {
+      return vector_value(*point_function, x, t);
     }
   } // namespace loads
 } // namespace pneuma

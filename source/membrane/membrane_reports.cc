@@ -160,6 +160,50 @@ namespace pneuma
     // ------------------------------------------------------------------
     // Reports
     // ------------------------------------------------------------------
+    std::pair<std::array<types::global_dof_index, 3>, std::array<double, 3>>
+    MembraneSubsystem::nearest_vertex(const Point<3> &p) const
+    {
+      double local_min = std::numeric_limits<double>::max();
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto v : cell->vertex_indices())
+            local_min = std::min(local_min, cell->vertex(v).distance(p));
+      const double global_min = Utilities::MPI::min(local_min, comm);
+      // The lowest rank that owns a vertex at that distance reports it.
+      std::array<types::global_dof_index, 3> dof;
+      dof.fill(numbers::invalid_dof_index);
+      std::array<double, 3> position{{0., 0., 0.}};
+      bool                  found = false;
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned() && !found)
+          for (const auto v : cell->vertex_indices())
+            if (cell->vertex(v).distance(p) <= global_min * (1 + 1e-12)
+                && owned_dofs.is_element(cell->vertex_dof_index(v, 0)))
+              {
+                for (unsigned int c = 0; c < 3; ++c)
+                  {
+                    dof[c]      = cell->vertex_dof_index(v, c);
+                    position[c] = cell->vertex(v)[c];
+                    // The surface form finding found.
+                    if (reference_shift.size() > 0)
+                      position[c] += reference_shift[dof[c]];
+                  }
+                found = true;
+                break;
+              }
+      const unsigned int me = Utilities::MPI::this_mpi_process(comm);
+      const unsigned int reporter =
+        Utilities::MPI::min(found ? me : numbers::invalid_unsigned_int, comm);
+      if (me != reporter)
+        {
+          dof.fill(numbers::invalid_dof_index);
+          position.fill(0.);
+        }
+      for (unsigned int c = 0; c < 3; ++c)
+        position[c] = Utilities::MPI::sum(position[c], comm);
+      return {dof, position};
+    }
+
     void
     MembraneSubsystem::locate_monitor_points()
     {
@@ -167,48 +211,55 @@ namespace pneuma
       monitor_positions.clear();
       for (const auto &p : monitor_points)
         {
-          double local_min = std::numeric_limits<double>::max();
-          for (const auto &cell : dofs.active_cell_iterators())
-            if (cell->is_locally_owned())
-              for (const auto v : cell->vertex_indices())
-                local_min = std::min(local_min, cell->vertex(v).distance(p));
-          const double global_min = Utilities::MPI::min(local_min, comm);
-          // The lowest rank that owns a vertex at that distance reports it.
-          std::array<types::global_dof_index, 3> dof;
-          dof.fill(numbers::invalid_dof_index);
-          std::array<double, 3> position{{0., 0., 0.}};
-          bool                  found = false;
-          for (const auto &cell : dofs.active_cell_iterators())
-            if (cell->is_locally_owned() && !found)
-              for (const auto v : cell->vertex_indices())
-                if (cell->vertex(v).distance(p) <= global_min * (1 + 1e-12)
-                    && owned_dofs.is_element(cell->vertex_dof_index(v, 0)))
-                  {
-                    for (unsigned int c = 0; c < 3; ++c)
-                      {
-                        dof[c]      = cell->vertex_dof_index(v, c);
-                        position[c] = cell->vertex(v)[c];
-                        // The surface form finding found.
-                        if (reference_shift.size() > 0)
-                          position[c] += reference_shift[dof[c]];
-                      }
-                    found = true;
-                    break;
-                  }
-          const unsigned int me = Utilities::MPI::this_mpi_process(comm);
-          const unsigned int reporter =
-            Utilities::MPI::min(found ? me : numbers::invalid_unsigned_int,
-                                comm);
-          if (me != reporter)
-            {
-              dof.fill(numbers::invalid_dof_index);
-              position.fill(0.);
-            }
-          for (unsigned int c = 0; c < 3; ++c)
-            position[c] = Utilities::MPI::sum(position[c], comm);
+          const auto [dof, position] = nearest_vertex(p);
           monitor_dofs.push_back(dof);
           monitor_positions.push_back(position);
         }
+    }
+
+    void
+    MembraneSubsystem::locate_point_loads()
+    {
+      point_load_dofs.clear();
+      const auto &points = model.loads().point_load_points();
+      for (unsigned int k = 0; k < points.size(); ++k)
+        {
+          const auto [dof, x] = nearest_vertex(points[k]);
+          point_load_dofs.push_back(dof);
+          model.out() << "Point load " << k << " at (" << points[k]
+                      << "): vertex (" << x[0] << ", " << x[1] << ", " << x[2]
+                      << ")" << std::endl;
+        }
+    }
+
+    bool
+    MembraneSubsystem::add_point_loads(
+      const double                     t,
+      const AffineConstraints<double> &constraints,
+      LA::Vector                      *residual,
+      LA::Vector                      *external) const
+    {
+      const auto &points = model.loads().point_load_points();
+      if (points.empty())
+        return false;
+      std::vector<types::global_dof_index> indices(3);
+      Vector<double>                       force(3), minus(3);
+      for (unsigned int k = 0; k < points.size(); ++k)
+        if (point_load_dofs[k][0] != numbers::invalid_dof_index)
+          {
+            const Tensor<1, 3> f = model.loads().point_load(points[k], t);
+            for (unsigned int c = 0; c < 3; ++c)
+              {
+                indices[c] = point_load_dofs[k][c];
+                force[c]   = f[c];
+                minus[c]   = -f[c];
+              }
+            if (residual)
+              constraints.distribute_local_to_global(minus, indices, *residual);
+            if (external)
+              constraints.distribute_local_to_global(force, indices, *external);
+          }
+      return true;
     }
 
     void
@@ -230,6 +281,8 @@ namespace pneuma
       assembler->assemble(u, model.kinematic_constraints(), request);
       for (const auto *terms : cell_terms)
         terms->add_loads(u, model.kinematic_constraints(), t, scratch, ext);
+      if (add_point_loads(t, model.kinematic_constraints(), nullptr, &ext))
+        ext.compress(VectorOperation::add);
       const LA::Vector &residual = model.support_residual();
       reaction.fill(0.);
       applied.fill(0.);
@@ -326,13 +379,25 @@ namespace pneuma
       statistics.add_vector(run, "reaction", "N", reaction, Statistics::report);
       statistics.add_vector(
         run, "applied_load", "N", applied, Statistics::report);
-      // The shells' bending energy at that assembly (the field's).
+      // With shells, the walls' strain energy split: membrane (all
+      // regions, at the field) and bending (the shells', at the last
+      // assembly, which is the field's).
       if (shell)
-        statistics.add(run,
-                       "bending_energy",
-                       "J",
-                       Utilities::MPI::sum(shell->energy(), comm),
-                       Statistics::report);
+        {
+          statistics.add(run,
+                         "membrane_energy",
+                         "J",
+                         Utilities::MPI::sum(
+                           postprocess::membrane_strain_energy(
+                             *mapping_cache, dofs, materials, scene, field),
+                           comm),
+                         Statistics::report);
+          statistics.add(run,
+                         "bending_energy",
+                         "J",
+                         Utilities::MPI::sum(shell->energy(), comm),
+                         Statistics::report);
+        }
       if (statistics.is_summary())
         {
           statistics.add_count(run,

@@ -270,18 +270,22 @@ namespace pneuma
         std::make_unique<MembraneAssembler>(scene, materials, model.loads());
       assembler->reinit(*mapping_cache, dofs, fe_degree);
       boundary_conditions.check_against_mesh(dofs);
-      if (!bending_parameters.clamped.empty())
-        {
-          check_input(shell != nullptr,
-                      "Bending/Clamped boundaries",
-                      "no region is a shell (Materials/Region k/Bending = "
-                      "shell): a membrane has no rotations to clamp");
-          const auto ids = mesh.get_boundary_ids();
-          for (const auto b : bending_parameters.clamped)
-            check_input(std::find(ids.begin(), ids.end(), b) != ids.end(),
-                        "Bending/Clamped boundaries",
-                        "the mesh has no boundary " + std::to_string(b));
-        }
+      {
+        // The shell edges' ids, and the edge moment at the start.
+        std::vector<Point<3>> moment_centres;
+        for (const auto &cell : dofs.active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const auto f : cell->face_indices())
+              if (cell->face(f)->at_boundary()
+                  && bending_parameters.moment_edges.count(
+                    cell->face(f)->boundary_id()))
+                moment_centres.push_back(cell->face(f)->center());
+        bending::check_edges(bending_parameters,
+                             shell != nullptr,
+                             mesh.get_boundary_ids(),
+                             moment_centres,
+                             comm);
+      }
       if (shell)
         model.out() << shell->description(fe_degree) << std::endl;
       prestress_force = prestress_force_scale();
@@ -583,6 +587,7 @@ namespace pneuma
     MembraneSubsystem::initialize(const LA::Vector &field, const double)
     {
       locate_monitor_points();
+      locate_point_loads();
       // A probe off the surface is an input error before the first step.
       if (!probe_points.empty())
         postprocess::membrane_probes(*mapping_cache,
@@ -622,22 +627,29 @@ namespace pneuma
       assembler->assemble(*a.field, *a.constraints, request);
       for (auto *terms : cell_terms)
         terms->end();
-      if (face_terms.empty() || (!a.residual && !a.tangent))
-        return;
-      for (auto *terms : face_terms)
-        terms->begin(a);
-      assemble_faces(*mapping_cache,
-                     dofs,
-                     face_terms,
-                     *a.field,
-                     *a.constraints,
-                     a.tangent,
-                     a.residual);
-      for (auto *terms : face_terms)
-        terms->end();
-      if (a.residual)
+      const bool faces =
+        !face_terms.empty() && (a.residual != nullptr || a.tangent != nullptr);
+      if (faces)
+        {
+          for (auto *terms : face_terms)
+            terms->begin(a);
+          assemble_faces(*mapping_cache,
+                         dofs,
+                         face_terms,
+                         *a.field,
+                         *a.constraints,
+                         a.tangent,
+                         a.residual);
+          for (auto *terms : face_terms)
+            terms->end();
+        }
+      const bool points =
+        add_point_loads(a.time, *a.constraints, a.residual, a.external);
+      if (a.residual && (faces || points))
         a.residual->compress(VectorOperation::add);
-      if (a.tangent)
+      if (a.external && points)
+        a.external->compress(VectorOperation::add);
+      if (a.tangent && faces)
         a.tangent->compress(VectorOperation::add);
     }
 

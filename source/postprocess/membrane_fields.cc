@@ -64,6 +64,43 @@ namespace pneuma
       return result;
     }
 
+    double
+    membrane_strain_energy(const Mapping<2, 3>             &mapping,
+                           const DoFHandler<2, 3>          &dof_handler,
+                           const membrane::MaterialRegions &materials,
+                           const geometry::SceneGenerator  &geometry,
+                           const LA::Vector                &u)
+    {
+      const QGauss<2> quadrature(dof_handler.get_fe().degree + 1);
+      FEValues<2, 3>  fe_values(mapping,
+                               dof_handler.get_fe(),
+                               quadrature,
+                               update_gradients | update_normal_vectors
+                                 | update_JxW_values);
+      const FEValuesExtractors::Vector displacement(0);
+      std::vector<Tensor<2, 3>>        grad_u(quadrature.size());
+      double                           energy = 0.;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fe_values.reinit(cell);
+            fe_values[displacement].get_function_gradients(u, grad_u);
+            const auto        &material = materials[cell->material_id()];
+            const Tensor<1, 3> warp     = material.warp(geometry, cell);
+            for (unsigned int q = 0; q < quadrature.size(); ++q)
+              {
+                const auto frame =
+                  membrane::tangent_frame(fe_values.normal_vector(q), warp);
+                const auto a = membrane::deformed_tangents(frame, grad_u[q]);
+                energy +=
+                  material.thickness
+                  * material.law->strain_energy(membrane::right_cauchy_green(a))
+                  * fe_values.JxW(q);
+              }
+          }
+      return energy;
+    }
+
     CellFields
     membrane_cell_fields(const Mapping<2, 3>             &mapping,
                          const DoFHandler<2, 3>          &dof_handler,

@@ -28,7 +28,9 @@ namespace pneuma
      * \f$\int p\,n\cdot\delta u\,da\f$) on the regions listed in "Pressure
      * regions". Gravity acts on the mass rho H per reference area. The
      * surface load is a dead traction per reference area; the line load is a
-     * dead force per reference length on the boundaries listed.
+     * dead force per reference length on the boundaries listed; point
+     * loads are dead forces at the membrane vertices nearest to the points
+     * listed.
      */
     class Loads
     {
@@ -83,6 +85,16 @@ namespace pneuma
       /// Dead line load [N/m per reference length] on boundary @p id.
       Tensor<1, 3>
       line_load(const Point<3> &x, const double t) const;
+      /// The dead point loads' points ("Point loads"), each loaded at the
+      /// membrane vertex nearest to it.
+      const std::vector<Point<3>> &
+      point_load_points() const
+      {
+        return point_points;
+      }
+      /// Dead point load [N] at point @p x (one of point_load_points()).
+      Tensor<1, 3>
+      point_load(const Point<3> &x, const double t) const;
 
       bool
       has_gravity() const
@@ -112,6 +124,10 @@ namespace pneuma
       std::unique_ptr<Functions::ParsedFunction<3>> gravity_function;
       std::unique_ptr<Functions::ParsedFunction<3>> surface_function;
       std::unique_ptr<Functions::ParsedFunction<3>> line_function;
+      std::unique_ptr<Functions::ParsedFunction<3>> point_function;
+      /// Entry "Point loads" as given and its points.
+      std::string           point_loads_text;
+      std::vector<Point<3>> point_points;
       /// Entries "Pressure regions", "Surface load regions" and "Line
       /// load boundaries" as given, and the ids parsed from them.
       std::string pressure_regions_text, surface_regions_text, line_load_text;

@@ -294,6 +294,22 @@ namespace pneuma
       shared_masters() const;
       void
       locate_monitor_points();
+      /// The dofs of the vertex nearest to @p p (invalid except on the
+      /// lowest rank that owns such a vertex) and its reference position
+      /// (on every rank).
+      std::pair<std::array<types::global_dof_index, 3>, std::array<double, 3>>
+      nearest_vertex(const Point<3> &p) const;
+      /// Find the point loads' vertices and say where they act.
+      void
+      locate_point_loads();
+      /// Add the dead point loads at time @p t to @p residual (minus) and
+      /// @p external (either may be nullptr); true if there are any (the
+      /// vectors then need compress(add)).
+      bool
+      add_point_loads(const double                     t,
+                      const AffineConstraints<double> &constraints,
+                      LA::Vector                      *residual,
+                      LA::Vector                      *external) const;
       /// InputError naming the rigid-body motions the supports leave free
       /// (a warning when other subsystems may hold the membrane).
       void
@@ -358,6 +374,8 @@ namespace pneuma
       // Monitor points: (owning rank's) dof indices of the nearest vertex.
       std::vector<std::array<types::global_dof_index, 3>> monitor_dofs;
       std::vector<std::array<double, 3>>                  monitor_positions;
+      // Point loads: (owning rank's) dof indices of the nearest vertex.
+      std::vector<std::array<types::global_dof_index, 3>> point_load_dofs;
 
       std::unique_ptr<DataOut<2, 3>> output;
       /// solution.pvd over the solution_NNNN.pvtu files.

@@ -98,6 +98,19 @@ namespace pneuma
                          const geometry::SceneGenerator  &geometry,
                          const LA::Vector                &u);
 
+    /**
+     * The membrane (in-plane) strain energy int H W(C) dA [J] of this
+     * rank's cells at the ghosted displacement @p u: each region's law as
+     * the assembly integrates it (wrinkling and prestress included), at
+     * the assembly's Gauss points.
+     */
+    double
+    membrane_strain_energy(const Mapping<2, 3>             &mapping,
+                           const DoFHandler<2, 3>          &dof_handler,
+                           const membrane::MaterialRegions &materials,
+                           const geometry::SceneGenerator  &geometry,
+                           const LA::Vector                &u);
+
     /// The wrinkling of the regions that wrinkle, over all ranks.
     struct WrinklingSummary
     {

@@ -1,3 +1,4 @@
+#include <deal.II/base/parsed_function.h>
 #include <deal.II/base/quadrature_lib.h>
 
 #include <pneuma/membrane/bending/bending_edges.h>
@@ -43,6 +44,10 @@ namespace pneuma
         struct EdgeRecord : FaceTerms::Record
         {
           double energy = 0.;
+          /// An edge moment's load on the cell's dofs (the external
+          /// force; empty without one).
+          Vector<double>                       load;
+          std::vector<types::global_dof_index> dofs;
         };
 
         Vec<double>
@@ -143,6 +148,45 @@ namespace pneuma
             for (unsigned int c = 0; c < 3; ++c)
               s.x[side][a][c] += local_u[index[a][c]];
         }
+
+        /**
+         * The edge moment m(X, t) at edge point @p xi (its @p shape, frame
+         * @p e, reference normal @p N and tangent @p T, current point
+         * derivatives @p g): its residual and load stiffness, and its
+         * external force (minus the residual) into @p load.
+         */
+        void
+        add_edge_moment(EdgeScratch                        &s,
+                        const Point<2>                     &xi,
+                        const ShapeDerivatives             &shape,
+                        const EdgeFrame                    &e,
+                        const Vec<double>                  &N,
+                        const Vec<double>                  &T,
+                        const double                       *g,
+                        FullMatrix<double>                 *matrix,
+                        Vector<double>                     *residual,
+                        Vector<double>                     &load,
+                        const Functions::ParsedFunction<3> &moment)
+        {
+          const Vec<double> X      = position(s.base, s.X[0], xi);
+          const double      m      = moment.value(Point<3>(X[0], X[1], X[2]));
+          const Vec<double> A      = normalized(T);
+          const auto        energy = [&](auto *v) {
+            using Number = std::decay_t<decltype(*v)>;
+            Number en    = edge_moment_energy(v, e, N, A, m);
+            return en;
+          };
+          double gradient[15];
+          differentiate<15>(g,
+                            energy,
+                            gradient,
+                            matrix ? s.hessian.data() : nullptr);
+          add_point_terms(
+            1, &shape, &s.dof, gradient, s.hessian.data(), residual, matrix);
+          for (unsigned int i = 0; i < 15; ++i)
+            gradient[i] = -gradient[i];
+          add_point_terms(1, &shape, &s.dof, gradient, nullptr, &load, nullptr);
+        }
       } // namespace
 
       BendingEdges::BendingEdges(const ShellContext &context)
@@ -157,9 +201,14 @@ namespace pneuma
       }
 
       void
-      BendingEdges::begin(const Assembly &)
+      BendingEdges::begin(const Assembly &a)
       {
         sum = 0.;
+        external =
+          context.parameters.moment_edges.empty() ? nullptr : a.external;
+        constraints = a.constraints;
+        if (!context.parameters.moment_edges.empty())
+          context.parameters.moment->set_time(a.time);
       }
 
       std::unique_ptr<FaceTerms::Scratch>
@@ -292,9 +341,11 @@ namespace pneuma
         auto &record             = static_cast<EdgeRecord &>(record_data);
         record.energy            = 0.;
         const RegionStiffness *k = context.of(cell->material_id());
-        if (!k
-            || !context.parameters.clamped.count(
-              cell->face(face)->boundary_id()))
+        record.load.reinit(0);
+        const types::boundary_id id = cell->face(face)->boundary_id();
+        const bool clamped          = context.parameters.clamped.count(id) > 0;
+        const bool loaded = context.parameters.moment_edges.count(id) > 0;
+        if (!k || !(clamped || loaded))
           return;
         auto &s = static_cast<EdgeScratch &>(scratch_data);
         s.X[0]  = s.nodes[0].of(cell);
@@ -303,31 +354,70 @@ namespace pneuma
         EdgeFrame         e;
         e.penalty = context.parameters.gamma(s.degree) * k->largest
                     / size_across(s, s.X[0], face);
+        if (loaded)
+          {
+            record.load.reinit(local_u.size());
+            record.dofs.resize(local_u.size());
+            cell->get_dof_indices(record.dofs);
+          }
         for (unsigned int q = 0; q < s.edge.size(); ++q)
           {
-            const ShapeDerivatives shape =
-              shape_derivatives(s.base, face_point(face, s.edge.point(q)[0]));
-            Vec<double>       nu, T;
-            const Vec<double> N =
+            const Point<2>         xi    = face_point(face, s.edge.point(q)[0]);
+            const ShapeDerivatives shape = shape_derivatives(s.base, xi);
+            Vec<double>            nu, T;
+            const Vec<double>      N =
               first_side(s, face, s.edge.weight(q), shape, warp, *k, e, nu, T);
             double g[15], gradient[15];
             point_derivatives(s.x[0], shape, g);
-            const auto energy = [&](auto *v) {
-              using Number = std::decay_t<decltype(*v)>;
-              Number en    = clamped_edge_energy(v, e, N);
-              return en;
-            };
-            record.energy += differentiate<15>(
-              g, energy, gradient, matrix ? s.hessian.data() : nullptr);
-            add_point_terms(
-              1, &shape, &s.dof, gradient, s.hessian.data(), residual, matrix);
+            if (clamped)
+              {
+                const auto energy = [&](auto *v) {
+                  using Number = std::decay_t<decltype(*v)>;
+                  Number en    = clamped_edge_energy(v, e, N);
+                  return en;
+                };
+                record.energy += differentiate<15>(
+                  g, energy, gradient, matrix ? s.hessian.data() : nullptr);
+                add_point_terms(1,
+                                &shape,
+                                &s.dof,
+                                gradient,
+                                s.hessian.data(),
+                                residual,
+                                matrix);
+              }
+            if (loaded)
+              add_edge_moment(s,
+                              xi,
+                              shape,
+                              e,
+                              N,
+                              T,
+                              g,
+                              matrix,
+                              residual,
+                              record.load,
+                              *context.parameters.moment);
           }
       }
 
       void
-      BendingEdges::commit(const FaceTerms::Record &record)
+      BendingEdges::end()
       {
-        sum += static_cast<const EdgeRecord &>(record).energy;
+        if (external)
+          external->compress(VectorOperation::add);
+        external = nullptr;
+      }
+
+      void
+      BendingEdges::commit(const FaceTerms::Record &record_data)
+      {
+        const auto &record = static_cast<const EdgeRecord &>(record_data);
+        sum += record.energy;
+        if (external && record.load.size() > 0)
+          constraints->distribute_local_to_global(record.load,
+                                                  record.dofs,
+                                                  *external);
       }
     } // namespace bending
   }   // namespace membrane

@@ -1,6 +1,8 @@
+#include <deal.II/base/parsed_function.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
 
+#include <pneuma/core/collective_error.h>
 #include <pneuma/core/input_error.h>
 #include <pneuma/loads/loads.h>
 #include <pneuma/membrane/bending/bending_cells.h>
@@ -43,6 +45,15 @@ namespace pneuma
           "direction about the edge (clamped edges and symmetry planes; "
           "their displacements are set in Boundary conditions). Other "
           "edges are free to rotate (simply supported or free).");
+        prm.declare_entry(
+          "Edge moment boundaries",
+          "",
+          Patterns::List(Patterns::Integer(0)),
+          "Boundary ids of shell regions loaded by the Edge moment: a "
+          "bending moment per unit length about the edge, work-conjugate to "
+          "the rotation of the normal about it (any angle, a roll-up to a "
+          "full circle included).");
+        loads::declare_function(prm, "Edge moment", 1, "0");
         prm.leave_subsection();
       }
 
@@ -58,7 +69,47 @@ namespace pneuma
         const auto ids = loads::parse_id_list(prm.get("Clamped boundaries"),
                                               "Bending/Clamped boundaries");
         clamped        = std::set<types::boundary_id>(ids.begin(), ids.end());
+        const auto loaded =
+          loads::parse_id_list(prm.get("Edge moment boundaries"),
+                               "Bending/Edge moment boundaries");
+        moment_edges =
+          std::set<types::boundary_id>(loaded.begin(), loaded.end());
+        moment = std::make_shared<Functions::ParsedFunction<3>>(1);
+        loads::parse_function(prm,
+                              *moment,
+                              "Edge moment",
+                              "Bending/Edge moment");
         prm.leave_subsection();
+      }
+
+      void
+      check_edges(const Parameters                      &parameters,
+                  const bool                             has_shell,
+                  const std::vector<types::boundary_id> &ids,
+                  const std::vector<Point<3>>           &centres,
+                  const MPI_Comm                         comm)
+      {
+        for (const auto &[path, edges] :
+             {std::make_pair("Bending/Clamped boundaries", parameters.clamped),
+              std::make_pair("Bending/Edge moment boundaries",
+                             parameters.moment_edges)})
+          {
+            check_input(edges.empty() || has_shell,
+                        path,
+                        "no region is a shell (Materials/Region k/Bending = "
+                        "shell): a membrane has no rotations");
+            for (const auto b : edges)
+              check_input(std::find(ids.begin(), ids.end(), b) != ids.end(),
+                          path,
+                          "the mesh has no boundary " + std::to_string(b));
+          }
+        parameters.moment->set_time(0.);
+        const std::string why =
+          loads::first_non_finite(*parameters.moment, centres);
+        throw_if_any(comm,
+                     why.empty()
+                       ? why
+                       : "Bending/Edge moment/Function expression: " + why);
       }
 
       std::map<types::material_id, RegionStiffness>

@@ -12,7 +12,8 @@
  * (bending/kirchhoff_love.h), at degree + 1 Gauss points along the edge,
  * with gamma = eta p (p + 1), D the larger region's largest stiffness and h
  * the smaller cell's area over its edge's length. Edges with a cell
- * without bending are hinges.
+ * without bending are hinges. On edges with an applied moment m [N m/m]
+ * the potential -m theta of the normal's turn theta about the edge.
  */
 
 #include <pneuma/membrane/bending/shell_bending.h>
@@ -34,7 +35,8 @@ namespace pneuma
         bool
         on_boundary_faces() const override
         {
-          return !context.parameters.clamped.empty();
+          return !context.parameters.clamped.empty()
+                 || !context.parameters.moment_edges.empty();
         }
         UpdateFlags
         update_flags() const override
@@ -72,9 +74,17 @@ namespace pneuma
           return sum;
         }
 
+        /// Compress the external forces of edge moments (after the face
+        /// loop, on every rank alike).
+        void
+        end() override;
+
       private:
         const ShellContext &context;
         double              sum = 0.;
+        /// The assembly's external force vector while edge moments load it.
+        LA::Vector                              *external    = nullptr;
+        const dealii::AffineConstraints<double> *constraints = nullptr;
       };
     } // namespace bending
   }   // namespace membrane

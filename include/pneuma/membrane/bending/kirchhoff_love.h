@@ -259,6 +259,33 @@ namespace pneuma
         const T delta = turn_angle(Nt, n, edge_tangent(g, e.tangent));
         return (-m * delta + 0.5 * e.penalty * delta * delta) * e.JxW;
       }
+
+      /**
+       * The potential (times its weight) of an applied edge moment @p m
+       * [N m/m] at @p g, the reference normal @p N (times the frame's
+       * sign) and the reference edge tangent @p A: -m theta, theta the
+       * turn of the normal from N about the fixed axis A (an axial
+       * moment: conservative, and blind to the normal's tilt along A).
+       * atan2 jumps by 2 pi where the normal turns through pi, its
+       * gradient and Hessian do not: the residual and the tangent hold for
+       * any angle.
+       */
+      template <typename T>
+      T
+      edge_moment_energy(const T           *g,
+                         const EdgeFrame   &e,
+                         const Vec<double> &N,
+                         const Vec<double> &A,
+                         const double       m)
+      {
+        Vec<T> Nt, At;
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            Nt[d] = N[d] + 0. * g[0];
+            At[d] = A[d] + 0. * g[0];
+          }
+        return -m * turn_angle(Nt, unit_normal(g), At) * e.JxW;
+      }
     } // namespace bending
   }   // namespace membrane
 } // namespace pneuma

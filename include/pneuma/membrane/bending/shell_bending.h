@@ -20,7 +20,9 @@
  * derivatives of the energy (Sacado, bending/sacado_energy.h).
  */
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
 #include <deal.II/base/types.h>
 
 #include <pneuma/membrane/cell_terms.h>
@@ -31,6 +33,15 @@
 #include <set>
 #include <string>
 #include <vector>
+
+namespace dealii
+{
+  namespace Functions
+  {
+    template <int dim>
+    class ParsedFunction;
+  }
+} // namespace dealii
 
 namespace pneuma
 {
@@ -51,6 +62,10 @@ namespace pneuma
         /// Edges whose normal keeps its reference direction about the
         /// edge (clamped edges and symmetry planes).
         std::set<types::boundary_id> clamped;
+        /// Edges carrying the applied edge moment.
+        std::set<types::boundary_id> moment_edges;
+        /// The edge moment m(x, y, z, t) [N m/m] (shared by the copies).
+        std::shared_ptr<Functions::ParsedFunction<3>> moment;
 
         /**
          * gamma for cells of degree @p p: 3 eta on Q2 (the default eta = 2
@@ -96,6 +111,20 @@ namespace pneuma
       /// The stiffness of every region with bending.
       std::map<types::material_id, RegionStiffness>
       region_stiffness(const MaterialRegions &materials);
+
+      /**
+       * Input errors of the Bending edges: clamped or moment edges
+       * without a shell region (@p has_shell), ids that are not among the
+       * mesh's boundary ids @p ids, an edge moment that is not finite at
+       * t = 0 at one of this rank's moment edge centres @p centres (every
+       * rank throws alike).
+       */
+      void
+      check_edges(const Parameters                      &parameters,
+                  const bool                             has_shell,
+                  const std::vector<types::boundary_id> &ids,
+                  const std::vector<Point<3>>           &centres,
+                  const MPI_Comm                         comm);
 
       class BendingCells;
       class BendingEdges;

@@ -1,0 +1,61 @@
+// Membrane locking of the Q2 shell (membrane/bending, doc/theory.md §21)
+// on the pinched hemisphere with an 18 degree hole of MacNeal & Harder's
+// shell obstacle course (parameter_files/pinched_hemisphere.prm: R = 10,
+// t = 0.04, E = 6.825e7, nu = 0.3, a quarter with its symmetry edges,
+// pinched by the point loads of Loads/Point loads). The benchmark is
+// linear: the loads are scaled by 1e-2 (the loaded points move by 2 % of
+// the thickness; the two points' displacements then differ by 1e-4) and
+// the displacement scaled back. Reference: the loaded point moves 0.094
+// along its load. The hemisphere (R/t = 250) bends almost without
+// stretching, which a coarse Q2 mesh cannot: 0.37 of the reference on
+// 8 x 8 cells, 0.85 on 16 x 16; on 32 x 32 within 2 %.
+
+#include "test_tools.h"
+
+#include <cstdio>
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  bool                                     ok        = true;
+  const double                             reference = 0.094;
+  double                                   u[3];
+  for (unsigned int r = 1; r <= 3; ++r)
+    {
+      auto settings = pneuma_test::quiet();
+      settings.insert(settings.end(),
+                      {{"Geometry/Global refinements", std::to_string(r)},
+                       {"Geometry/gmsh/Mesh file",
+                        std::string(PNEUMA_SOURCE_DIR)
+                          + "/meshes/pinched_hemisphere.msh"},
+                       {"Loads/Point load/Function expression",
+                        "if(x > 5, 1, 0)*1e-2*t; if(y > 5, -1, 0)*1e-2*t; 0"}});
+      const auto s =
+        pneuma_test::make(settings,
+                          std::string(PNEUMA_SOURCE_DIR)
+                            + "/parameter_files/pinched_hemisphere.prm")
+          ->run();
+      if (pneuma_test::failed(s, "pinched hemisphere"))
+        return 1;
+      u[r - 1] = 1e2 * s.get("m0_u_x");
+      if (pneuma_test::root() && r == 3)
+        std::printf("the inward point moves %.4f of the outward one\n",
+                    -s.get("m1_u_y") / s.get("m0_u_x"));
+    }
+  if (pneuma_test::root())
+    std::printf("pinched hemisphere on 8 x 8 and 16 x 16 Q2 cells: %.3f and "
+                "%.3f of the reference (membrane locking)\n",
+                u[0] / reference,
+                u[1] / reference);
+  ok = u[0] < u[1] && u[1] < u[2] && ok;
+  ok = pneuma_test::check(
+         "pinched hemisphere on 32 x 32 Q2 cells: the loaded point [m]",
+         u[2],
+         reference,
+         2e-2)
+       && ok;
+  if (pneuma_test::root())
+    std::printf("%s\n", ok ? "OK" : "FAILED");
+  return ok ? 0 : 1;
+}
