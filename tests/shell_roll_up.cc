@@ -92,7 +92,7 @@ main(int argc, char **argv)
                      {"Bending/Edge moment/Function expression",
                       pneuma_test::number(2. * pi * D / L) + "*t"},
                      {"Load stepping/Stage end times", "0.25, 0.5, 1"},
-                     {"Load stepping/Initial increment", "0.0625"}});
+                     {"Load stepping/Initial increment", "0.125"}});
     const auto s = pneuma_test::run(settings);
     if (pneuma_test::failed(s, "roll-up"))
       return 1;
