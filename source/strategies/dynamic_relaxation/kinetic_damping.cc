@@ -198,8 +198,9 @@ namespace pneuma
                              const double    t,
                              const double    tolerance) const
     {
-      Relaxation relaxation{run.model, x, t, settings.safety};
-      Result     result;
+      Relaxation relaxation{
+        run.model, x, t, settings.safety, {}, {}, {}, {}, {}};
+      Result result;
       relaxation.dx = run.model.make_field();
       relaxation.move();
       relaxation.r  = x;

@@ -230,19 +230,33 @@ namespace pneuma
         return normalized(a);
       }
 
-      /// The interior edge energy (times its weight) at the point
-      /// derivatives @p g of both cells (30 numbers: first cell, second).
+      /**
+       * The change delta = theta - Theta of the kink at the first
+       * derivatives @p v of both cells (12 numbers: x_,1 and x_,2 of the
+       * first cell, then of the second): theta turns n- into n+ about the
+       * current edge tangent.
+       */
       template <typename T>
       T
-      interior_edge_energy(const T *g, const EdgeFrame &e)
+      edge_kink(const T *v, const EdgeFrame &e)
       {
-        Vec<T>  n0, n1;
-        const T m0    = normal_moment(g, e.side[0], e.nu[0], n0);
-        const T m1    = normal_moment(g + 15, e.side[1], e.nu[1], n1);
-        const T theta = turn_angle(n0, n1, edge_tangent(g, e.tangent));
-        const T delta = theta - e.Theta;
-        const T mean  = 0.5 * (m0 + m1);
-        return (mean * delta + 0.5 * e.penalty * delta * delta) * e.JxW;
+        Vec<T> n0 = unit_normal(v), n1 = unit_normal(v + 6);
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            n0[d] *= e.side[0].sign;
+            n1[d] *= e.side[1].sign;
+          }
+        return turn_angle(n0, n1, edge_tangent(v, e.tangent)) - e.Theta;
+      }
+
+      /// The moment normal to the edge on side @p side at its point
+      /// derivatives @p g (15 numbers).
+      template <typename T>
+      T
+      side_moment(const T *g, const EdgeFrame &e, const unsigned int side)
+      {
+        Vec<T> n;
+        return normal_moment(g, e.side[side], e.nu[side], n);
       }
 
       /// The clamped edge energy (times its weight) at @p g, the
