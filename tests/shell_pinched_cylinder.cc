@@ -1,0 +1,55 @@
+// Membrane locking of the Q2 shell (membrane/bending, doc/theory.md §21)
+// on the pinched cylinder with rigid end diaphragms of MacNeal & Harder's
+// shell obstacle course (parameter_files/pinched_cylinder.prm: R = 300,
+// L = 600, t = 3, E = 3e6, nu = 0.3, an eighth with its three symmetry
+// edges, P = 1000 so that the point moves 0.6 % of the thickness).
+// Reference: the loaded point moves 1.8248e-5 P. Unlike the hemisphere
+// (R/t = 250) and the roof, this shell (R/t = 100, bent near the load) is
+// within 1 % already on 8 x 8 Q2 cells per eighth, and converges from
+// below.
+
+#include "test_tools.h"
+
+#include <cstdio>
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  bool                                     ok        = true;
+  const double                             reference = 1.8248e-5 * 1000.;
+  double                                   w[3];
+  for (unsigned int r = 1; r <= 3; ++r)
+    {
+      auto settings = pneuma_test::quiet();
+      settings.insert(settings.end(),
+                      {{"Geometry/Global refinements", std::to_string(r)},
+                       {"Geometry/gmsh/Mesh file",
+                        std::string(PNEUMA_SOURCE_DIR)
+                          + "/meshes/pinched_cylinder.msh"}});
+      const auto s =
+        pneuma_test::make(settings,
+                          std::string(PNEUMA_SOURCE_DIR)
+                            + "/parameter_files/pinched_cylinder.prm")
+          ->run();
+      if (pneuma_test::failed(s, "pinched cylinder"))
+        return 1;
+      w[r - 1] = -s.get("m0_u_z");
+    }
+  if (pneuma_test::root())
+    std::printf("pinched cylinder on 8 x 8, 16 x 16 and 32 x 32 Q2 cells per "
+                "eighth: %.3f, %.3f and %.3f of the reference\n",
+                w[0] / reference,
+                w[1] / reference,
+                w[2] / reference);
+  ok = w[0] < w[1] && w[1] < w[2] && ok;
+  ok = pneuma_test::check(
+         "pinched cylinder on 32 x 32 Q2 cells: the loaded point [m]",
+         w[2],
+         reference,
+         2e-3)
+       && ok;
+  if (pneuma_test::root())
+    std::printf("%s\n", ok ? "OK" : "FAILED");
+  return ok ? 0 : 1;
+}
