@@ -8,7 +8,7 @@
 // within 1 % already on 8 x 8 Q2 cells per eighth, and converges from
 // below.
 
-#include "test_tools.h"
+#include "obstacle_course.h"
 
 #include <cstdio>
 
@@ -21,17 +21,7 @@ main(int argc, char **argv)
   double                                   w[3];
   for (unsigned int r = 1; r <= 3; ++r)
     {
-      auto settings = pneuma_test::quiet();
-      settings.insert(settings.end(),
-                      {{"Geometry/Global refinements", std::to_string(r)},
-                       {"Geometry/gmsh/Mesh file",
-                        std::string(PNEUMA_SOURCE_DIR)
-                          + "/meshes/pinched_cylinder.msh"}});
-      const auto s =
-        pneuma_test::make(settings,
-                          std::string(PNEUMA_SOURCE_DIR)
-                            + "/parameter_files/pinched_cylinder.prm")
-          ->run();
+      const auto s = pneuma_test::run_course("pinched_cylinder", r);
       if (pneuma_test::failed(s, "pinched cylinder"))
         return 1;
       w[r - 1] = -s.get("m0_u_z");

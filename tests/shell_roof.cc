@@ -10,7 +10,7 @@
 // (the membrane strains of its inextensional bending are not resolved);
 // on 16 x 16 it is within 2 %.
 
-#include "test_tools.h"
+#include "obstacle_course.h"
 
 #include <cstdio>
 
@@ -23,17 +23,11 @@ main(int argc, char **argv)
   double                                   w[2];
   for (unsigned int r = 1; r <= 2; ++r)
     {
-      auto settings = pneuma_test::quiet();
-      settings.insert(
-        settings.end(),
-        {{"Geometry/Global refinements", std::to_string(r)},
-         {"Geometry/gmsh/Mesh file",
-          std::string(PNEUMA_SOURCE_DIR) + "/meshes/scordelis_lo.msh"},
-         {"Loads/Surface traction/Function expression", "0; 0; -0.09*t"}});
-      const auto s = pneuma_test::make(settings,
-                                       std::string(PNEUMA_SOURCE_DIR)
-                                         + "/parameter_files/scordelis_lo.prm")
-                       ->run();
+      const auto s =
+        pneuma_test::run_course("scordelis_lo",
+                                r,
+                                {{"Loads/Surface traction/Function expression",
+                                  "0; 0; -0.09*t"}});
       if (pneuma_test::failed(s, "Scordelis-Lo roof"))
         return 1;
       w[r - 1] = -1e3 * s.get("m0_u_z");

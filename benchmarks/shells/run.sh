@@ -8,7 +8,8 @@
 # iteration (the cells' and the edges' terms; the bending's share is the
 # difference) and linear-solve seconds per iteration, and the bending
 # energy's share of the walls' strain energy.
-# Usage: benchmarks/shells/run.sh [OUT]   (from anywhere; builds if needed)
+# Usage: [REFINEMENTS="4 5"] [WALLS="membrane shell"] benchmarks/shells/run.sh [OUT]
+# (from anywhere; builds if needed)
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
@@ -23,7 +24,7 @@ quiet=(--set "Output/Quiet=true" --set "Output/Write VTU=false"
 echo "| refinements | cells | dofs | walls | wall s | peak MB | Newton iterations | assembly s per iteration | linear solve s per iteration | bending / strain energy |"
 echo "|---|---|---|---|---|---|---|---|---|---|"
 for r in ${REFINEMENTS:-4 5}; do
-  for walls in membrane shell; do
+  for walls in ${WALLS:-membrane shell}; do
     d="$out/tube-$r-$walls"
     bending=none
     [ "$walls" = shell ] && bending=shell

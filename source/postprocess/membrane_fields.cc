@@ -15,6 +15,38 @@ namespace pneuma
 {
   namespace postprocess
   {
+    namespace
+    {
+      /// The FEValues of the membrane's cells at the assembly's Gauss
+      /// points (degree + 1) and the displacement gradients there.
+      struct CellGradients
+      {
+        CellGradients(const Mapping<2, 3>    &mapping,
+                      const DoFHandler<2, 3> &dofs)
+          : quadrature(dofs.get_fe().degree + 1)
+          , fe_values(mapping,
+                      dofs.get_fe(),
+                      quadrature,
+                      update_gradients | update_normal_vectors
+                        | update_JxW_values)
+          , grad_u(quadrature.size())
+        {
+        }
+        /// Reinitialize on @p cell and gather the gradients of @p u.
+        void
+        reinit(const DoFHandler<2, 3>::active_cell_iterator &cell,
+               const LA::Vector                             &u)
+        {
+          fe_values.reinit(cell);
+          fe_values[FEValuesExtractors::Vector(0)].get_function_gradients(
+            u, grad_u);
+        }
+        const QGauss<2>           quadrature;
+        FEValues<2, 3>            fe_values;
+        std::vector<Tensor<2, 3>> grad_u;
+      };
+    } // namespace
+
     PrincipalForces
     in_plane_principal(const SymmetricTensor<2, 3> &n,
                        const Tensor<1, 3>          &normal)
@@ -71,23 +103,17 @@ namespace pneuma
                            const geometry::SceneGenerator  &geometry,
                            const LA::Vector                &u)
     {
-      const QGauss<2> quadrature(dof_handler.get_fe().degree + 1);
-      FEValues<2, 3>  fe_values(mapping,
-                               dof_handler.get_fe(),
-                               quadrature,
-                               update_gradients | update_normal_vectors
-                                 | update_JxW_values);
-      const FEValuesExtractors::Vector displacement(0);
-      std::vector<Tensor<2, 3>>        grad_u(quadrature.size());
-      double                           energy = 0.;
+      CellGradients points(mapping, dof_handler);
+      const auto   &fe_values = points.fe_values;
+      const auto   &grad_u    = points.grad_u;
+      double        energy    = 0.;
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
-            fe_values.reinit(cell);
-            fe_values[displacement].get_function_gradients(u, grad_u);
+            points.reinit(cell, u);
             const auto        &material = materials[cell->material_id()];
             const Tensor<1, 3> warp     = material.warp(geometry, cell);
-            for (unsigned int q = 0; q < quadrature.size(); ++q)
+            for (unsigned int q = 0; q < points.quadrature.size(); ++q)
               {
                 const auto frame =
                   membrane::tangent_frame(fe_values.normal_vector(q), warp);
@@ -142,22 +168,16 @@ namespace pneuma
         dof_handler.get_triangulation().n_active_cells();
       f.values.assign(f.names.size(), Vector<double>(n_cells));
 
-      const unsigned int               degree = dof_handler.get_fe().degree;
-      const QGauss<2>                  quadrature(degree + 1);
-      FEValues<2, 3>                   fe_values(mapping,
-                               dof_handler.get_fe(),
-                               quadrature,
-                               update_gradients | update_normal_vectors
-                                 | update_JxW_values);
-      const FEValuesExtractors::Vector displacement(0);
-      std::vector<Tensor<2, 3>>        grad_u(quadrature.size());
-      unsigned int                     non_finite = 0;
+      CellGradients points(mapping, dof_handler);
+      const auto   &quadrature = points.quadrature;
+      const auto   &fe_values  = points.fe_values;
+      const auto   &grad_u     = points.grad_u;
+      unsigned int  non_finite = 0;
 
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
-            fe_values.reinit(cell);
-            fe_values[displacement].get_function_gradients(u, grad_u);
+            points.reinit(cell, u);
             const auto           &material = materials[cell->material_id()];
             const Tensor<1, 3>    warp     = material.warp(geometry, cell);
             SymmetricTensor<2, 3> n_avg;
@@ -258,24 +278,19 @@ namespace pneuma
       WrinklingSummary result;
       auto            &areas = result.areas;
       double           minor = std::numeric_limits<double>::max();
-      const QGauss<2>  quadrature(dof_handler.get_fe().degree + 1);
-      FEValues<2, 3>   fe_values(mapping,
-                               dof_handler.get_fe(),
-                               quadrature,
-                               update_gradients | update_normal_vectors
-                                 | update_JxW_values);
-      const FEValuesExtractors::Vector displacement(0);
-      std::vector<Tensor<2, 3>>        grad_u(quadrature.size());
+      CellGradients    points(mapping, dof_handler);
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
             const auto &material = materials[cell->material_id()];
             if (!material.tension_field)
               continue;
-            fe_values.reinit(cell);
-            fe_values[displacement].get_function_gradients(u, grad_u);
-            const CellWrinkling c = cell_wrinkling(
-              fe_values, grad_u, material, material.warp(geometry, cell));
+            points.reinit(cell, u);
+            const CellWrinkling c =
+              cell_wrinkling(points.fe_values,
+                             points.grad_u,
+                             material,
+                             material.warp(geometry, cell));
             for (unsigned int i = 0; i < 3; ++i)
               areas[i] += c.areas[i];
             minor = std::min(minor, c.minor_force);

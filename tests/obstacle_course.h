@@ -1,0 +1,32 @@
+#pragma once
+
+// The shell obstacle course's tests (tests/shell_roof, shell_hemisphere,
+// shell_pinched_cylinder) run parameter_files/<name>.prm on
+// meshes/<name>.msh.
+
+#include "test_tools.h"
+
+#include <string>
+
+namespace pneuma_test
+{
+  /// Run parameter_files/@p name.prm quietly on meshes/@p name.msh refined
+  /// @p refinements times, with @p extra on top.
+  inline pneuma::RunResult
+  run_course(const std::string &name,
+             const unsigned int refinements,
+             const Settings    &extra = {})
+  {
+    Settings settings = quiet();
+    settings.insert(
+      settings.end(),
+      {{"Geometry/Global refinements", std::to_string(refinements)},
+       {"Geometry/gmsh/Mesh file",
+        std::string(PNEUMA_SOURCE_DIR) + "/meshes/" + name + ".msh"}});
+    settings.insert(settings.end(), extra.begin(), extra.end());
+    return make(settings,
+                std::string(PNEUMA_SOURCE_DIR) + "/parameter_files/" + name
+                  + ".prm")
+      ->run();
+  }
+} // namespace pneuma_test
