@@ -239,8 +239,9 @@ namespace pneuma
       LA::Vector                      *residual,
       LA::Vector                      *external) const
     {
+      // Off in form finding, as the assembler's loads are.
       const auto &points = model.loads().point_load_points();
-      if (points.empty())
+      if (points.empty() || form_finding)
         return false;
       std::vector<types::global_dof_index> indices(3);
       Vector<double>                       force(3), minus(3);

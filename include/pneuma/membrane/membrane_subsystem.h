@@ -303,8 +303,8 @@ namespace pneuma
       void
       locate_point_loads();
       /// Add the dead point loads at time @p t to @p residual (minus) and
-      /// @p external (either may be nullptr); true if there are any (the
-      /// vectors then need compress(add)).
+      /// @p external (either may be nullptr); true if there are any and
+      /// form finding is not on (the vectors then need compress(add)).
       bool
       add_point_loads(const double                     t,
                       const AffineConstraints<double> &constraints,

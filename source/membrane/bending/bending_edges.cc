@@ -415,8 +415,9 @@ namespace pneuma
         current_nodes(s, 0, s.dof, local_u);
         const Vec<double> warp = warp_of(context, cell);
         EdgeFrame         e;
-        e.penalty = context.parameters.gamma(s.degree) * k->largest
-                    / size_across(s, s.X[0], face);
+        if (clamped)
+          e.penalty = context.parameters.gamma(s.degree) * k->largest
+                      / size_across(s, s.X[0], face);
         if (loaded)
           {
             record.load.reinit(local_u.size());
