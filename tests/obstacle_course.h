@@ -10,12 +10,12 @@
 
 namespace pneuma_test
 {
-  /// Run parameter_files/@p name.prm quietly on meshes/@p name.msh refined
+  /// The quiet settings of the course's @p name on its mesh refined
   /// @p refinements times, with @p extra on top.
-  inline pneuma::RunResult
-  run_course(const std::string &name,
-             const unsigned int refinements,
-             const Settings    &extra = {})
+  inline Settings
+  course_settings(const std::string &name,
+                  const unsigned int refinements,
+                  const Settings    &extra = {})
   {
     Settings settings = quiet();
     settings.insert(
@@ -24,9 +24,27 @@ namespace pneuma_test
        {"Geometry/gmsh/Mesh file",
         std::string(PNEUMA_SOURCE_DIR) + "/meshes/" + name + ".msh"}});
     settings.insert(settings.end(), extra.begin(), extra.end());
-    return make(settings,
+    return settings;
+  }
+
+  /// The simulator of parameter_files/@p name.prm with course_settings.
+  inline std::unique_ptr<pneuma::Simulator>
+  make_course(const std::string &name,
+              const unsigned int refinements,
+              const Settings    &extra = {})
+  {
+    return make(course_settings(name, refinements, extra),
                 std::string(PNEUMA_SOURCE_DIR) + "/parameter_files/" + name
-                  + ".prm")
-      ->run();
+                  + ".prm");
+  }
+
+  /// Run parameter_files/@p name.prm quietly on meshes/@p name.msh refined
+  /// @p refinements times, with @p extra on top.
+  inline pneuma::RunResult
+  run_course(const std::string &name,
+             const unsigned int refinements,
+             const Settings    &extra = {})
+  {
+    return make_course(name, refinements, extra)->run();
   }
 } // namespace pneuma_test

@@ -7,8 +7,11 @@
 // the thickness; the two points' displacements then differ by 1e-4) and
 // the displacement scaled back. Reference: the loaded point moves 0.094
 // along its load. The hemisphere (R/t = 250) bends almost without
-// stretching, which a coarse Q2 mesh cannot: 0.37 of the reference on
-// 8 x 8 cells, 0.85 on 16 x 16; on 32 x 32 within 2 %.
+// stretching, which a coarse Q2 mesh with the displacement's membrane
+// strains cannot (0.37 of the reference on 8 x 8 cells, 0.85 on 16 x 16:
+// membrane locking); with the assumed strains of a Q2 shell (MITC9
+// tying, membrane/assumed_strains.h) 8 x 8 cells are within 3 % and the
+// answer converges from below, 32 x 32 within 1 %.
 
 #include "obstacle_course.h"
 
@@ -36,16 +39,23 @@ main(int argc, char **argv)
                     -s.get("m1_u_y") / s.get("m0_u_x"));
     }
   if (pneuma_test::root())
-    std::printf("pinched hemisphere on 8 x 8 and 16 x 16 Q2 cells: %.3f and "
-                "%.3f of the reference (membrane locking)\n",
+    std::printf("pinched hemisphere on 8 x 8, 16 x 16 and 32 x 32 Q2 "
+                "cells: %.4f, %.4f and %.4f of the reference\n",
                 u[0] / reference,
-                u[1] / reference);
+                u[1] / reference,
+                u[2] / reference);
   ok = u[0] < u[1] && u[1] < u[2] && ok;
+  ok = pneuma_test::check(
+         "pinched hemisphere on 8 x 8 Q2 cells: the loaded point [m]",
+         u[0],
+         reference,
+         3e-2)
+       && ok;
   ok = pneuma_test::check(
          "pinched hemisphere on 32 x 32 Q2 cells: the loaded point [m]",
          u[2],
          reference,
-         2e-2)
+         1e-2)
        && ok;
   if (pneuma_test::root())
     std::printf("%s\n", ok ? "OK" : "FAILED");

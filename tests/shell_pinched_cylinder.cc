@@ -3,10 +3,12 @@
 // shell obstacle course (parameter_files/pinched_cylinder.prm: R = 300,
 // L = 600, t = 3, E = 3e6, nu = 0.3, an eighth with its three symmetry
 // edges, P = 1000 so that the point moves 0.6 % of the thickness).
-// Reference: the loaded point moves 1.8248e-5 P. Unlike the hemisphere
-// (R/t = 250) and the roof, this shell (R/t = 100, bent near the load) is
-// within 1 % already on 8 x 8 Q2 cells per eighth, and converges from
-// below. Its strain energy, membrane and bending (38 % and 62 %), is half
+// Reference: the loaded point moves 1.8248e-5 P. With the assumed
+// membrane strains of a Q2 shell (MITC9 tying) it converges from above
+// (with the displacement's strains, from below: 0.990, 0.994, 0.999 on
+// 8, 16, 32 cells per side): a coarse mesh is too soft under the point
+// load, 1.097 of the reference on 8 x 8, 1.013 on 16 x 16, within 1e-3
+// on 32 x 32. Its strain energy, membrane and bending (38 % and 62 %), is half
 // the work of the load (Clapeyron).
 
 #include "obstacle_course.h"
@@ -43,7 +45,7 @@ main(int argc, char **argv)
                 w[0] / reference,
                 w[1] / reference,
                 w[2] / reference);
-  ok = w[0] < w[1] && w[1] < w[2] && ok;
+  ok = w[0] > w[1] && w[1] > w[2] && ok;
   ok = pneuma_test::check(
          "pinched cylinder on 32 x 32 Q2 cells: the loaded point [m]",
          w[2],

@@ -8,8 +8,12 @@
 //   (2L/pi - L, 2L/pi) and (-L, 2L/pi); at m the tip's distance from the
 //   clamp, the bending energy against M^2 L/(2 EI) = 2 pi^2 EI/L (M = m b,
 //   EI = D b) and the membrane energy against the bending energy (the
-//   exact circle is inextensional). On 80 x 8 cells (too slow for a test)
-//   the tip is 3.4e-4 L from the clamp, the bending energy within 2e-5.
+//   exact circle is inextensional). With the assumed membrane strains
+//   (the default) 20 x 2, 40 x 4 and 80 x 8 cells agree: the tip is
+//   6.6e-4 L from the clamp and the bending energy 6.9e-4 above, the
+//   Kirchhoff-Love energy's own coupling of bending and stretch at order
+//   (kappa t)^2 (membrane energy (kappa t)^2/12 of the bending energy),
+//   not a discretisation error (doc/verification.md).
 // - The tangent with an edge moment (a turned, stretched strip) against
 //   central differences of the residual.
 // - Stretch: a dead line load f = 1 MN/m along the strip at x = 1/2: the
@@ -125,19 +129,19 @@ main(int argc, char **argv)
     if (pneuma_test::root())
       std::printf("roll-up at m: tip from the clamp %.1e L (%s)\n",
                   gap,
-                  gap < 5e-3 ? "< 5e-3 L" : "FAIL");
-    ok             = gap < 5e-3 && ok;
+                  gap < 1e-3 ? "< 1e-3 L" : "FAIL");
+    ok             = gap < 1e-3 && ok;
     const double M = 2. * pi * EI / L;
     ok             = pneuma_test::check("roll-up at m: bending energy [J]",
                             s.get("bending_energy"),
                             M * M * L / (2. * EI),
-                            1e-2)
+                            2e-3)
          && ok;
     const double share = s.get("membrane_energy") / s.get("bending_energy");
     if (pneuma_test::root())
       std::printf("roll-up at m: membrane energy / bending energy %s\n",
-                  share < 5e-3 ? "< 5e-3" : "FAIL");
-    ok = share < 5e-3 && ok;
+                  share < 1e-3 ? "< 1e-3" : "FAIL");
+    ok = share < 1e-3 && ok;
   }
 
   // Uniaxial stretch.

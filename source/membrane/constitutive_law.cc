@@ -90,6 +90,19 @@ namespace pneuma
             "Factor on the shell's bending stiffness t^3/12 dS/dE: 1 for the "
             "wall's own bending, below 1 for bending as a regulariser; > 0.",
             Patterns::Double());
+          add_selection(
+            prm,
+            "Membrane strains",
+            slot->membrane_strains,
+            {{"auto", MembraneStrains::automatic},
+             {"displacement", MembraneStrains::displacement},
+             {"assumed", MembraneStrains::assumed}},
+            "The membrane strains of Q2 cells. displacement: those of the "
+            "displacement field; assumed: interpolated from tying points "
+            "(MITC9, Bucalem & Bathe 1993; doc/theory.md 21), which removes "
+            "the membrane locking of curved shells on coarse meshes; auto: "
+            "assumed where the region is a shell, else displacement. Q1 "
+            "cells always use the displacement's strains.");
           prm.add_parameter(
             "Warp direction",
             slot->warp_direction,
@@ -226,7 +239,8 @@ namespace pneuma
                             + std::to_string(slot->bending_factor));
               m.bending_factor = slot->bending_factor;
             }
-          regions[slot->id] = m;
+          m.membrane_strains = slot->membrane_strains;
+          regions[slot->id]  = m;
         }
       prm.leave_subsection();
     }

@@ -89,10 +89,15 @@ namespace pneuma
         {
         }
 
-        FEFaceValues<2, 3>                               fe_face_values;
-        std::vector<std::array<double, 3>>               u_node, DP, DQ;
-        std::vector<std::array<double, 2>>               tau;
-        std::vector<double>                              K_node, P_node;
+        FEFaceValues<2, 3>                 fe_face_values;
+        std::vector<std::array<double, 3>> u_node, DP, DQ;
+        std::vector<std::array<double, 2>> tau;
+        std::vector<double>                K_node, P_node;
+        /// Assumed strains: the tying points' state, the strains'
+        /// derivatives and the stress weights there.
+        TyingState tying;
+        double     dE[TyingGeometry::n_tying][3 * AssumedStrains::n_node];
+        double     w[TyingGeometry::n_tying];
         const std::vector<CellTerms *>                  *term_list;
         std::vector<std::unique_ptr<CellTerms::Scratch>> terms;
       };
@@ -283,6 +288,7 @@ namespace pneuma
                        const PointState   &s,
                        const double       *N,
                        const Tensor<1, 3> &dead_load,
+                       const bool          internal,
                        CellScratch        &scratch,
                        CellCopy           &copy)
       {
@@ -293,12 +299,28 @@ namespace pneuma
               const unsigned int i = ctx.dof_of[a][c];
               const double       f_ext =
                 (s.p * area_vector[c] + dead_load[c]) * N[a] * s.dA;
-              copy.residual(i) +=
-                s.HdA
-                  * (scratch.tau[a][0] * s.a0[c] + scratch.tau[a][1] * s.a1[c])
-                - f_ext;
+              copy.residual(i) += internal
+                                    ? s.HdA
+                                          * (scratch.tau[a][0] * s.a0[c]
+                                             + scratch.tau[a][1] * s.a1[c])
+                                        - f_ext
+                                    : -f_ext;
               copy.external(i) += f_ext;
             }
+      }
+
+      /// The law's tangent in Voigt form: rows S_11, S_22, S_12, columns
+      /// E_11, E_22, 2 E_12.
+      void
+      voigt(const SymmetricTensor<4, 2> &D, double (*Dv)[3])
+      {
+        for (unsigned int r = 0; r < 3; ++r)
+          {
+            const unsigned int i = r == 1 ? 1 : 0, j = r == 0 ? 0 : 1;
+            Dv[r][0] = D[i][j][0][0];
+            Dv[r][1] = D[i][j][1][1];
+            Dv[r][2] = D[i][j][0][1];
+          }
       }
 
       /**
@@ -314,15 +336,14 @@ namespace pneuma
                           const std::array<double, 2> *dN,
                           CellScratch                 &scratch)
       {
-        const auto  &D        = s.D;
-        auto        &DP       = scratch.DP;
-        auto        &DQ       = scratch.DQ;
-        const auto  &tau      = scratch.tau;
-        const auto   n_node   = ctx.n_node;
-        const auto   n_dofs   = ctx.n_dofs;
-        const double Dv[3][3] = {{D[0][0][0][0], D[0][0][1][1], D[0][0][0][1]},
-                                 {D[1][1][0][0], D[1][1][1][1], D[1][1][0][1]},
-                                 {D[0][1][0][0], D[0][1][1][1], D[0][1][0][1]}};
+        const auto &D      = s.D;
+        auto       &DP     = scratch.DP;
+        auto       &DQ     = scratch.DQ;
+        const auto &tau    = scratch.tau;
+        const auto  n_node = ctx.n_node;
+        const auto  n_dofs = ctx.n_dofs;
+        double      Dv[3][3];
+        voigt(D, Dv);
         for (unsigned int b = 0; b < n_node; ++b)
           for (unsigned int r = 0; r < 3; ++r)
             {
@@ -400,8 +421,63 @@ namespace pneuma
         std::fill(scratch.P_node.begin(), scratch.P_node.end(), 0.);
       }
 
+      /// The point's pressure and dead load (weight, surface load).
+      Tensor<1, 3>
+      point_loads(const CellContext              &ctx,
+                  const RegionMaterial           &material,
+                  const bool                      pressurised,
+                  const bool                      surface_loaded,
+                  const ReferenceGeometry::Point &P,
+                  PointState                     &s)
+      {
+        const Point<3> X(P.X[0], P.X[1], P.X[2]);
+        s.p                    = !pressurised           ? 0.
+                                 : ctx.uniform_pressure ? ctx.pressure_value
+                                                        : ctx.loads.pressure(X, ctx.t);
+        Tensor<1, 3> dead_load = material.density * material.thickness * ctx.g;
+        if (surface_loaded)
+          dead_load += ctx.loads.surface_load(X, ctx.t);
+        return dead_load;
+      }
+
+      /// The strains' derivatives at the tying points of a cell with
+      /// assumed strains, and its stress weights cleared.
+      void
+      start_assumed_cell(const CellContext   &ctx,
+                         const TyingGeometry &tying,
+                         CellScratch         &scratch)
+      {
+        const auto &rule = ctx.ref.assumed_strains();
+        rule.state(tying, scratch.u_node, scratch.tying);
+        if (ctx.want_stress)
+          rule.strain_derivatives(scratch.tying, scratch.dE);
+        std::fill(std::begin(scratch.w), std::end(scratch.w), 0.);
+      }
+
+      /// The internal forces and geometric stiffness of a cell with
+      /// assumed strains, through its tying points.
+      void
+      finish_assumed_cell(const CellContext &ctx,
+                          CellScratch       &scratch,
+                          CellCopy          &copy)
+      {
+        const auto &rule = ctx.ref.assumed_strains();
+        if (ctx.want_vector && ctx.want_stress)
+          {
+            double f[3 * AssumedStrains::n_node] = {};
+            rule.add_forces(scratch.dE, scratch.w, f);
+            for (unsigned int a = 0; a < ctx.n_node; ++a)
+              for (unsigned int c = 0; c < 3; ++c)
+                copy.residual(ctx.dof_of[a][c]) += f[3 * a + c];
+          }
+        if (ctx.want_matrix)
+          rule.add_geometric_stiffness(scratch.w, scratch.K_node.data());
+      }
+
       /// The stresses, loads and tangent of every quadrature point of a
-      /// cell (the membrane's own terms).
+      /// cell (the membrane's own terms). A cell with assumed strains
+      /// (ref.tying) takes its strains from the tying points and its
+      /// internal forces and stiffness through them; loads are the same.
       void
       add_cell_points(const CellContext                            &ctx,
                       const RegionMaterial                         &material,
@@ -410,12 +486,14 @@ namespace pneuma
                       CellScratch                                  &scratch,
                       CellCopy                                     &copy)
       {
-        const auto  &loads = ctx.loads;
-        const double H     = material.thickness;
-        const bool   pressurised =
+        const auto &loads = ctx.loads;
+        const bool  pressurised =
           ctx.loaded && loads.pressure_acts_on(cell->material_id());
         const bool surface_loaded =
           ctx.loaded && loads.surface_load_acts_on(cell->material_id());
+        const TyingGeometry *tying = ctx.ref.tying(cell_index);
+        if (tying)
+          start_assumed_cell(ctx, *tying, scratch);
         PointState s;
         for (unsigned int q = 0; q < ctx.n_q; ++q)
           {
@@ -424,35 +502,48 @@ namespace pneuma
             const double *N  = ctx.ref.shape_values(q);
             base_vectors(ctx, P, dN, scratch.u_node, s);
             SymmetricTensor<2, 2> C;
-            C[0][0] = s.a0 * s.a0;
-            C[0][1] = s.a0 * s.a1;
-            C[1][1] = s.a1 * s.a1;
+            if (tying)
+              C = unit_symmetric_tensor<2>()
+                  + 2.
+                      * ctx.ref.assumed_strains().strain(*tying,
+                                                         scratch.tying,
+                                                         q);
+            else
+              C = right_cauchy_green({{s.a0, s.a1}});
             if (ctx.want_matrix)
               material.law->evaluate(C, s.S, s.D);
             else if (ctx.want_stress)
               material.law->stress(C, s.S);
             s.dA  = P.JxW;
-            s.HdA = H * s.dA;
-            const Point<3> X(P.X[0], P.X[1], P.X[2]);
-            s.p                    = !pressurised           ? 0.
-                                     : ctx.uniform_pressure ? ctx.pressure_value
-                                                            : loads.pressure(X, ctx.t);
-            Tensor<1, 3> dead_load = material.density * H * ctx.g;
-            if (surface_loaded)
-              dead_load += loads.surface_load(X, ctx.t);
-            for (unsigned int a = 0; a < ctx.n_node; ++a)
+            s.HdA = material.thickness * s.dA;
+            const Tensor<1, 3> dead_load =
+              point_loads(ctx, material, pressurised, surface_loaded, P, s);
+            if (tying && ctx.want_stress)
+              ctx.ref.assumed_strains().add_stress_weights(
+                *tying, q, s.S, s.HdA, scratch.w);
+            for (unsigned int a = 0; !tying && a < ctx.n_node; ++a)
               {
                 scratch.tau[a][0] = s.S[0][0] * dN[a][0] + s.S[0][1] * dN[a][1];
                 scratch.tau[a][1] = s.S[0][1] * dN[a][0] + s.S[1][1] * dN[a][1];
               }
             if (ctx.want_vector)
-              add_point_forces(ctx, s, N, dead_load, scratch, copy);
+              add_point_forces(ctx, s, N, dead_load, !tying, scratch, copy);
             if (!ctx.want_matrix)
               continue;
-            add_point_stiffness(ctx, s, dN, scratch);
+            if (tying)
+              {
+                double Dv[3][3];
+                voigt(s.D, Dv);
+                ctx.ref.assumed_strains().add_material_stiffness(
+                  *tying, q, scratch.dE, Dv, s.HdA, scratch.K_node.data());
+              }
+            else
+              add_point_stiffness(ctx, s, dN, scratch);
             if (s.p != 0.)
               add_pressure_stiffness(ctx, s, N, dN, scratch);
           }
+        if (tying)
+          finish_assumed_cell(ctx, scratch, copy);
         if (ctx.want_matrix)
           gather_cell_matrix(ctx, scratch, copy);
       }

@@ -103,7 +103,7 @@ namespace pneuma
                               DataOut<2, 3>::type_dof_data,
                               interpretation);
       postprocess::CellFields fields = postprocess::membrane_cell_fields(
-        *mapping_cache, dofs, materials, scene, field);
+        *mapping_cache, dofs, reference_geometry(), materials, scene, field);
       if (shell)
         shell->cell_fields(field, fields.names, fields.values);
       output_cell_data.clear();

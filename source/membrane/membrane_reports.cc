@@ -385,14 +385,19 @@ namespace pneuma
       // assembly, which is the field's).
       if (shell)
         {
-          statistics.add(run,
-                         "membrane_energy",
-                         "J",
-                         Utilities::MPI::sum(
-                           postprocess::membrane_strain_energy(
-                             *mapping_cache, dofs, materials, scene, field),
-                           comm),
-                         Statistics::report);
+          statistics.add(
+            run,
+            "membrane_energy",
+            "J",
+            Utilities::MPI::sum(
+              postprocess::membrane_strain_energy(*mapping_cache,
+                                                  dofs,
+                                                  reference_geometry(),
+                                                  materials,
+                                                  scene,
+                                                  field),
+              comm),
+            Statistics::report);
           statistics.add(run,
                          "bending_energy",
                          "J",
@@ -434,8 +439,12 @@ namespace pneuma
         }
       if (materials.any_wrinkling())
         {
-          const auto w = postprocess::wrinkling_summary(
-            *mapping_cache, dofs, materials, scene, field);
+          const auto w = postprocess::wrinkling_summary(*mapping_cache,
+                                                        dofs,
+                                                        reference_geometry(),
+                                                        materials,
+                                                        scene,
+                                                        field);
           statistics.add(
             run, "wrinkled_area", "m^2", w.areas[1], Statistics::report);
           statistics.add(

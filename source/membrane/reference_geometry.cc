@@ -1,5 +1,6 @@
 #include <deal.II/base/quadrature_lib.h>
 
+#include <pneuma/core/input_error.h>
 #include <pneuma/membrane/reference_geometry.h>
 #include <pneuma/membrane/surface_kinematics.h>
 
@@ -36,6 +37,61 @@ namespace pneuma
       return geometry.orientation(x, n);
     }
 
+    bool
+    uses_assumed_strains(const RegionMaterial    &material,
+                         const types::material_id id,
+                         const unsigned int       degree)
+    {
+      switch (material.membrane_strains)
+        {
+          case MembraneStrains::assumed:
+            check_input(degree == 2,
+                        "Materials/Region " + std::to_string(id)
+                          + "/Membrane strains",
+                        "assumed strains need Q2 cells (Finite element "
+                        "degree = 2), the mesh has degree "
+                          + std::to_string(degree));
+            return true;
+          case MembraneStrains::displacement:
+            return false;
+          default:
+            return material.bending_factor > 0. && degree == 2;
+        }
+    }
+
+    std::unique_ptr<FEValues<2, 3>>
+    ReferenceGeometry::start_assumed_strains(const MaterialRegions &materials,
+                                             const Mapping<2, 3>   &mapping,
+                                             const FiniteElement<2, 3> &fe,
+                                             const unsigned int         degree)
+    {
+      bool any = false;
+      for (const auto id : materials.ids())
+        any |= uses_assumed_strains(materials[id], id, degree);
+      if (!any)
+        return nullptr;
+      assumed = std::make_unique<AssumedStrains>(fe);
+      return std::make_unique<FEValues<2, 3>>(mapping,
+                                              fe,
+                                              assumed->tying_points(),
+                                              update_jacobians);
+    }
+
+    void
+    ReferenceGeometry::add_tying_cell(const unsigned int    k,
+                                      const FEValues<2, 3> &at_gauss,
+                                      const FEValues<2, 3> &at_tying)
+    {
+      double frames[TyingGeometry::n_q][2][3];
+      for (unsigned int q = 0; q < n_q; ++q)
+        std::copy(&points[std::size_t(k) * n_q + q].E[0][0],
+                  &points[std::size_t(k) * n_q + q].E[0][0] + 6,
+                  &frames[q][0][0]);
+      tying_of[k] = tying_cells.size();
+      tying_cells.emplace_back();
+      assumed->reference(at_tying, at_gauss, frames, tying_cells.back());
+    }
+
     ReferenceGeometry::ReferenceGeometry(
       const geometry::SceneGenerator &geometry,
       const MaterialRegions          &materials,
@@ -50,8 +106,10 @@ namespace pneuma
                                quadrature,
                                update_values | update_gradients
                                  | update_normal_vectors
-                                 | update_quadrature_points
-                                 | update_JxW_values);
+                                 | update_quadrature_points | update_JxW_values
+                                 | update_inverse_jacobians);
+      const auto      at_tying =
+        start_assumed_strains(materials, mapping, fe, degree);
       n_q                       = quadrature.size();
       const unsigned int n_dofs = fe.n_dofs_per_cell();
       n_node                    = n_dofs / 3;
@@ -72,6 +130,8 @@ namespace pneuma
       derivatives.resize(std::size_t(n_owned) * n_q * n_node);
       values.resize(n_q * n_node);
 
+      if (assumed)
+        tying_of.assign(n_owned, -1);
       std::vector<types::global_dof_index> cell_dofs(n_dofs);
       unsigned int                         k = 0;
       for (const auto &cell : dof_handler.active_cell_iterators())
@@ -110,6 +170,14 @@ namespace pneuma
                     values[q * n_node + a] =
                       fe_values.shape_value_component(by_node[a][0], q, 0);
                 }
+            }
+          if (assumed
+              && uses_assumed_strains(materials[cell->material_id()],
+                                      cell->material_id(),
+                                      degree))
+            {
+              at_tying->reinit(cell);
+              add_tying_cell(k, fe_values, *at_tying);
             }
           ++k;
         }

@@ -15,37 +15,68 @@ namespace pneuma
 {
   namespace postprocess
   {
-    namespace
+    CellKinematics::CellKinematics(const Mapping<2, 3>               &mapping,
+                                   const DoFHandler<2, 3>            &dofs,
+                                   const membrane::ReferenceGeometry *reference)
+      : quadrature(dofs.get_fe().degree + 1)
+      , fe_values(mapping,
+                  dofs.get_fe(),
+                  quadrature,
+                  update_gradients | update_normal_vectors | update_JxW_values)
+      , reference(reference)
+      , grad_u(quadrature.size())
+      , u_node(dofs.get_fe().n_dofs_per_cell() / 3)
+      , a(quadrature.size())
+      , C_q(quadrature.size())
     {
-      /// The FEValues of the membrane's cells at the assembly's Gauss
-      /// points (degree + 1) and the displacement gradients there.
-      struct CellGradients
-      {
-        CellGradients(const Mapping<2, 3>    &mapping,
-                      const DoFHandler<2, 3> &dofs)
-          : quadrature(dofs.get_fe().degree + 1)
-          , fe_values(mapping,
-                      dofs.get_fe(),
-                      quadrature,
-                      update_gradients | update_normal_vectors
-                        | update_JxW_values)
-          , grad_u(quadrature.size())
+      // The reference data are by locally owned cell, in order.
+      owned_index.assign(dofs.get_triangulation().n_active_cells(), -1);
+      int k = 0;
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned())
+          owned_index[cell->active_cell_index()] = k++;
+    }
+
+    void
+    CellKinematics::reinit(const DoFHandler<2, 3>::active_cell_iterator &cell,
+                           const LA::Vector                             &u,
+                           const Tensor<1, 3>                           &warp)
+    {
+      fe_values.reinit(cell);
+      fe_values[FEValuesExtractors::Vector(0)].get_function_gradients(u,
+                                                                      grad_u);
+      const int                      k = owned_index[cell->active_cell_index()];
+      const membrane::TyingGeometry *tying_geometry =
+        reference && k >= 0 ? reference->tying(k) : nullptr;
+      if (!tying_geometry)
         {
+          for (unsigned int q = 0; q < n_points(); ++q)
+            {
+              const auto frame =
+                membrane::tangent_frame(fe_values.normal_vector(q), warp);
+              a[q]   = membrane::deformed_tangents(frame, grad_u[q]);
+              C_q[q] = membrane::right_cauchy_green(a[q]);
+            }
+          return;
         }
-        /// Reinitialize on @p cell and gather the gradients of @p u.
-        void
-        reinit(const DoFHandler<2, 3>::active_cell_iterator &cell,
-               const LA::Vector                             &u)
+      // Assumed strains, in the assembly's frame.
+      const auto *dofs = reference->dof_indices(k);
+      for (unsigned int i = 0; i < 3 * u_node.size(); ++i)
+        u_node[reference->node(i)][reference->component(i)] = u[dofs[i]];
+      const auto &rule = reference->assumed_strains();
+      rule.state(*tying_geometry, u_node, tying);
+      for (unsigned int q = 0; q < n_points(); ++q)
         {
-          fe_values.reinit(cell);
-          fe_values[FEValuesExtractors::Vector(0)].get_function_gradients(
-            u, grad_u);
+          membrane::TangentFrame frame;
+          for (unsigned int d = 0; d < 3; ++d)
+            for (unsigned int al = 0; al < 2; ++al)
+              frame.e[al][d] = reference->point(k, q).E[al][d];
+          frame.N = cross_product_3d(frame.e[0], frame.e[1]);
+          a[q]    = membrane::deformed_tangents(frame, grad_u[q]);
+          C_q[q]  = unit_symmetric_tensor<2>()
+                   + 2. * rule.strain(*tying_geometry, tying, q);
         }
-        const QGauss<2>           quadrature;
-        FEValues<2, 3>            fe_values;
-        std::vector<Tensor<2, 3>> grad_u;
-      };
-    } // namespace
+    }
 
     PrincipalForces
     in_plane_principal(const SymmetricTensor<2, 3> &n,
@@ -63,21 +94,16 @@ namespace pneuma
     }
 
     CellWrinkling
-    cell_wrinkling(const FEValues<2, 3>            &fe_values,
-                   const std::vector<Tensor<2, 3>> &grad_u,
-                   const membrane::RegionMaterial  &material,
-                   const Tensor<1, 3>              &warp)
+    cell_wrinkling(const CellKinematics           &points,
+                   const membrane::RegionMaterial &material)
     {
       CellWrinkling result;
       result.minor_force = std::numeric_limits<double>::max();
-      for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+      for (unsigned int q = 0; q < points.n_points(); ++q)
         {
-          const auto frame =
-            membrane::tangent_frame(fe_values.normal_vector(q), warp);
-          const auto a = membrane::deformed_tangents(frame, grad_u[q]);
-          const auto state =
-            material.tension_field->state(membrane::right_cauchy_green(a));
-          const double w = fe_values.JxW(q);
+          const auto  &a     = points.tangents(q);
+          const auto   state = material.tension_field->state(points.C(q));
+          const double w     = points.JxW(q);
           result.areas[state.kind] += w;
           result.compression +=
             w * material.thickness * std::min(state.plain_minor_stress, 0.);
@@ -97,103 +123,101 @@ namespace pneuma
     }
 
     double
-    membrane_strain_energy(const Mapping<2, 3>             &mapping,
-                           const DoFHandler<2, 3>          &dof_handler,
-                           const membrane::MaterialRegions &materials,
-                           const geometry::SceneGenerator  &geometry,
-                           const LA::Vector                &u)
+    membrane_strain_energy(const Mapping<2, 3>               &mapping,
+                           const DoFHandler<2, 3>            &dof_handler,
+                           const membrane::ReferenceGeometry &reference,
+                           const membrane::MaterialRegions   &materials,
+                           const geometry::SceneGenerator    &geometry,
+                           const LA::Vector                  &u)
     {
-      CellGradients points(mapping, dof_handler);
-      const auto   &fe_values = points.fe_values;
-      const auto   &grad_u    = points.grad_u;
-      double        energy    = 0.;
+      CellKinematics points(mapping, dof_handler, &reference);
+      double         energy = 0.;
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
-            points.reinit(cell, u);
-            const auto        &material = materials[cell->material_id()];
-            const Tensor<1, 3> warp     = material.warp(geometry, cell);
-            for (unsigned int q = 0; q < points.quadrature.size(); ++q)
-              {
-                const auto frame =
-                  membrane::tangent_frame(fe_values.normal_vector(q), warp);
-                const auto a = membrane::deformed_tangents(frame, grad_u[q]);
-                energy +=
-                  material.thickness
-                  * material.law->strain_energy(membrane::right_cauchy_green(a))
-                  * fe_values.JxW(q);
-              }
+            const auto &material = materials[cell->material_id()];
+            points.reinit(cell, u, material.warp(geometry, cell));
+            for (unsigned int q = 0; q < points.n_points(); ++q)
+              energy += material.thickness
+                        * material.law->strain_energy(points.C(q))
+                        * points.JxW(q);
           }
       return energy;
     }
 
+    namespace
+    {
+      /// The names of the membrane cell fields (the wrinkling ones where a
+      /// region wrinkles).
+      std::vector<std::string>
+      cell_field_names(const bool wrinkling)
+      {
+        std::vector<std::string> names = {"membrane_force_xx",
+                                          "membrane_force_yy",
+                                          "membrane_force_zz",
+                                          "membrane_force_xy",
+                                          "membrane_force_xz",
+                                          "membrane_force_yz",
+                                          "N1",
+                                          "N2",
+                                          "N1_direction_x",
+                                          "N1_direction_y",
+                                          "N1_direction_z",
+                                          "N2_direction_x",
+                                          "N2_direction_y",
+                                          "N2_direction_z",
+                                          "E1",
+                                          "E2",
+                                          "thickness_stretch",
+                                          "material_region"};
+        if (wrinkling)
+          for (const std::string name : {"wrinkling_state",
+                                         "wrinkle_direction_x",
+                                         "wrinkle_direction_y",
+                                         "wrinkle_direction_z",
+                                         "relaxed_compression",
+                                         "wrinkled_fraction",
+                                         "slack_fraction"})
+            names.push_back(name);
+        return names;
+      }
+    } // namespace
+
     CellFields
-    membrane_cell_fields(const Mapping<2, 3>             &mapping,
-                         const DoFHandler<2, 3>          &dof_handler,
-                         const membrane::MaterialRegions &materials,
-                         const geometry::SceneGenerator  &geometry,
-                         const LA::Vector                &u)
+    membrane_cell_fields(const Mapping<2, 3>               &mapping,
+                         const DoFHandler<2, 3>            &dof_handler,
+                         const membrane::ReferenceGeometry &reference,
+                         const membrane::MaterialRegions   &materials,
+                         const geometry::SceneGenerator    &geometry,
+                         const LA::Vector                  &u)
     {
       CellFields f;
-      f.names = {"membrane_force_xx",
-                 "membrane_force_yy",
-                 "membrane_force_zz",
-                 "membrane_force_xy",
-                 "membrane_force_xz",
-                 "membrane_force_yz",
-                 "N1",
-                 "N2",
-                 "N1_direction_x",
-                 "N1_direction_y",
-                 "N1_direction_z",
-                 "N2_direction_x",
-                 "N2_direction_y",
-                 "N2_direction_z",
-                 "E1",
-                 "E2",
-                 "thickness_stretch",
-                 "material_region"};
-      // Wrinkling fields only where a region wrinkles.
-      const bool wrinkling = materials.any_wrinkling();
-      if (wrinkling)
-        for (const std::string name : {"wrinkling_state",
-                                       "wrinkle_direction_x",
-                                       "wrinkle_direction_y",
-                                       "wrinkle_direction_z",
-                                       "relaxed_compression",
-                                       "wrinkled_fraction",
-                                       "slack_fraction"})
-          f.names.push_back(name);
+      f.names = cell_field_names(materials.any_wrinkling());
+      const bool         wrinkling = materials.any_wrinkling();
       const unsigned int n_cells =
         dof_handler.get_triangulation().n_active_cells();
       f.values.assign(f.names.size(), Vector<double>(n_cells));
 
-      CellGradients points(mapping, dof_handler);
-      const auto   &quadrature = points.quadrature;
-      const auto   &fe_values  = points.fe_values;
-      const auto   &grad_u     = points.grad_u;
-      unsigned int  non_finite = 0;
+      CellKinematics points(mapping, dof_handler, &reference);
+      unsigned int   non_finite = 0;
 
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
-            points.reinit(cell, u);
-            const auto           &material = materials[cell->material_id()];
-            const Tensor<1, 3>    warp     = material.warp(geometry, cell);
+            const auto &material = materials[cell->material_id()];
+            points.reinit(cell, u, material.warp(geometry, cell));
             SymmetricTensor<2, 3> n_avg;
             SymmetricTensor<2, 2> E_avg;
             Tensor<1, 3>          normal_avg;
             double                l3 = 0., area = 0.;
-            for (unsigned int q = 0; q < quadrature.size(); ++q)
+            for (unsigned int q = 0; q < points.n_points(); ++q)
               {
-                const auto frame =
-                  membrane::tangent_frame(fe_values.normal_vector(q), warp);
-                const auto a = membrane::deformed_tangents(frame, grad_u[q]);
-                const auto C = membrane::right_cauchy_green(a);
+                const auto           &a = points.tangents(q);
+                const auto           &C = points.C(q);
                 SymmetricTensor<2, 2> S;
                 SymmetricTensor<4, 2> D;
                 material.law->evaluate(C, S, D);
-                const double w = fe_values.JxW(q);
+                const double w = points.JxW(q);
                 n_avg +=
                   w * membrane::membrane_forces(a, S, material.thickness);
                 E_avg += w * 0.5 * (C - unit_symmetric_tensor<2>());
@@ -241,8 +265,7 @@ namespace pneuma
               {
                 // The areas of summary.json's wrinkled_area and
                 // slack_area, cell by cell: the same function.
-                const CellWrinkling c =
-                  cell_wrinkling(fe_values, grad_u, material, warp);
+                const CellWrinkling c = cell_wrinkling(points, material);
                 // The state that covers most of the cell.
                 unsigned int s = 0;
                 for (unsigned int i = 1; i < 3; ++i)
@@ -269,28 +292,25 @@ namespace pneuma
     }
 
     WrinklingSummary
-    wrinkling_summary(const Mapping<2, 3>             &mapping,
-                      const DoFHandler<2, 3>          &dof_handler,
-                      const membrane::MaterialRegions &materials,
-                      const geometry::SceneGenerator  &geometry,
-                      const LA::Vector                &u)
+    wrinkling_summary(const Mapping<2, 3>               &mapping,
+                      const DoFHandler<2, 3>            &dof_handler,
+                      const membrane::ReferenceGeometry &reference,
+                      const membrane::MaterialRegions   &materials,
+                      const geometry::SceneGenerator    &geometry,
+                      const LA::Vector                  &u)
     {
       WrinklingSummary result;
       auto            &areas = result.areas;
       double           minor = std::numeric_limits<double>::max();
-      CellGradients    points(mapping, dof_handler);
+      CellKinematics   points(mapping, dof_handler, &reference);
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
             const auto &material = materials[cell->material_id()];
             if (!material.tension_field)
               continue;
-            points.reinit(cell, u);
-            const CellWrinkling c =
-              cell_wrinkling(points.fe_values,
-                             points.grad_u,
-                             material,
-                             material.warp(geometry, cell));
+            points.reinit(cell, u, material.warp(geometry, cell));
+            const CellWrinkling c = cell_wrinkling(points, material);
             for (unsigned int i = 0; i < 3; ++i)
               areas[i] += c.areas[i];
             minor = std::min(minor, c.minor_force);

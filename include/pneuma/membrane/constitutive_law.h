@@ -96,6 +96,15 @@ namespace pneuma
     class TensionFieldLaw;
 
     /// The material of one region (material id) of the membrane mesh.
+    /// Membrane strains = auto (assumed on Q2 shells, else the
+    /// displacement's), displacement or assumed.
+    enum class MembraneStrains
+    {
+      automatic,
+      displacement,
+      assumed
+    };
+
     struct RegionMaterial
     {
       std::string                      law_name;
@@ -129,6 +138,11 @@ namespace pneuma
       /// Bending = shell: the factor on the bending stiffness t^3/12 dS/dE
       /// (membrane/bending/shell_bending.h); 0: a membrane.
       double bending_factor = 0.;
+      /// The membrane strains of the region's Q2 cells: the displacement's
+      /// own, or assumed strains interpolated from tying points (MITC9,
+      /// membrane/assumed_strains.h), which remove membrane locking of
+      /// curved shells.
+      MembraneStrains membrane_strains = MembraneStrains::automatic;
     };
 
     /**
@@ -177,8 +191,9 @@ namespace pneuma
         double      residual_stiffness = 1e-6;
         double      smoothing          = 0.;
         /// Bending: none (false) or shell (true), and its factor.
-        bool   bending        = false;
-        double bending_factor = 1.;
+        bool            bending          = false;
+        double          bending_factor   = 1.;
+        MembraneStrains membrane_strains = MembraneStrains::automatic;
         std::map<std::string, std::unique_ptr<ConstitutiveLaw>> laws;
       };
       std::vector<std::unique_ptr<Slot>>                   slots;

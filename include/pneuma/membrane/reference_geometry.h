@@ -21,9 +21,11 @@
 #include <deal.II/fe/mapping.h>
 
 #include <pneuma/geometry/scene_generator.h>
+#include <pneuma/membrane/assumed_strains.h>
 #include <pneuma/membrane/constitutive_law.h>
 
 #include <array>
+#include <memory>
 #include <vector>
 
 namespace pneuma
@@ -46,6 +48,13 @@ namespace pneuma
     double
     cell_orientation(const geometry::SceneGenerator &geometry,
                      const FEValues<2, 3>           &fe_values);
+
+    /// Whether the cells of @p material take assumed membrane strains
+    /// with elements of @p degree (InputError: assumed asked of Q1).
+    bool
+    uses_assumed_strains(const RegionMaterial    &material,
+                         const types::material_id id,
+                         const unsigned int       degree);
 
     /// Reference data of the locally owned cells, in the order of
     /// DoFHandler::active_cell_iterators().
@@ -108,6 +117,21 @@ namespace pneuma
       {
         return &values[q * n_node];
       }
+      /// The tying geometry of a cell with assumed membrane strains, else
+      /// nullptr.
+      const TyingGeometry *
+      tying(const unsigned int cell) const
+      {
+        return tying_of.empty() || tying_of[cell] < 0
+                 ? nullptr
+                 : &tying_cells[tying_of[cell]];
+      }
+      /// The assumed strains' rule (only where a cell has tying()).
+      const AssumedStrains &
+      assumed_strains() const
+      {
+        return *assumed;
+      }
       /// Node a and component c of cell dof i (FESystem order).
       unsigned int
       node(const unsigned int i) const
@@ -121,12 +145,29 @@ namespace pneuma
       }
 
     private:
+      /// The assumed strains' rule if a region takes them, and an
+      /// FEValues with the jacobians at its tying points (else nullptr).
+      std::unique_ptr<FEValues<2, 3>>
+      start_assumed_strains(const MaterialRegions     &materials,
+                            const Mapping<2, 3>       &mapping,
+                            const FiniteElement<2, 3> &fe,
+                            const unsigned int         degree);
+      /// The tying geometry of owned cell @p k from the FEValues at its
+      /// Gauss and tying points (its frames already stored).
+      void
+      add_tying_cell(const unsigned int    k,
+                     const FEValues<2, 3> &at_gauss,
+                     const FEValues<2, 3> &at_tying);
+
       unsigned int                         n_owned = 0, n_q = 0, n_node = 0;
       std::vector<types::global_dof_index> dofs;
       std::vector<Point>                   points;
       std::vector<std::array<double, 2>>   derivatives;
       std::vector<double>                  values;
       std::vector<unsigned int>            node_of, component_of;
+      std::unique_ptr<AssumedStrains>      assumed;
+      std::vector<int>                     tying_of;
+      std::vector<TyingGeometry>           tying_cells;
     };
   } // namespace membrane
 } // namespace pneuma

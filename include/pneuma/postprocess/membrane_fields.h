@@ -20,8 +20,13 @@
  * wrinkled_fraction and slack_fraction are each cell's sums over its
  * reference area, so that summing fraction times cell area gives
  * summary.json's numbers.
+ *
+ * Every field is evaluated at the assembly's Gauss points with the strains
+ * the assembly uses: a cell with assumed membrane strains
+ * (membrane/assumed_strains.h) takes them, in the assembly's frame.
  */
 
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_values.h>
@@ -31,6 +36,7 @@
 #include <pneuma/core/linear_algebra.h>
 #include <pneuma/geometry/scene_generator.h>
 #include <pneuma/membrane/constitutive_law.h>
+#include <pneuma/membrane/reference_geometry.h>
 
 #include <array>
 #include <string>
@@ -63,6 +69,58 @@ namespace pneuma
       std::vector<Vector<double>> values;
     };
 
+    /**
+     * The membrane kinematics of a cell's Gauss points as the assembly
+     * sees them: the deformed tangents a_alpha of a material frame and
+     * C, from the displacement gradients, or where the cell has assumed
+     * strains (@p reference's tying()) C from those, in its frame.
+     */
+    class CellKinematics
+    {
+    public:
+      CellKinematics(const Mapping<2, 3>               &mapping,
+                     const DoFHandler<2, 3>            &dof_handler,
+                     const membrane::ReferenceGeometry *reference);
+
+      /// At the locally owned @p cell, @p warp its region's warp.
+      void
+      reinit(const DoFHandler<2, 3>::active_cell_iterator &cell,
+             const LA::Vector                             &u,
+             const Tensor<1, 3>                           &warp);
+
+      unsigned int
+      n_points() const
+      {
+        return quadrature.size();
+      }
+      double
+      JxW(const unsigned int q) const
+      {
+        return fe_values.JxW(q);
+      }
+      const std::array<Tensor<1, 3>, 2> &
+      tangents(const unsigned int q) const
+      {
+        return a[q];
+      }
+      const SymmetricTensor<2, 2> &
+      C(const unsigned int q) const
+      {
+        return C_q[q];
+      }
+
+    private:
+      const QGauss<2>                          quadrature;
+      FEValues<2, 3>                           fe_values;
+      const membrane::ReferenceGeometry       *reference;
+      std::vector<int>                         owned_index;
+      std::vector<Tensor<2, 3>>                grad_u;
+      std::vector<std::array<double, 3>>       u_node;
+      std::vector<std::array<Tensor<1, 3>, 2>> a;
+      std::vector<SymmetricTensor<2, 2>>       C_q;
+      membrane::TyingState                     tying;
+    };
+
     /// The wrinkling of one cell, by quadrature point.
     struct CellWrinkling
     {
@@ -78,25 +136,22 @@ namespace pneuma
     };
 
     /**
-     * The wrinkling of the cell @p fe_values is initialized on (its
-     * region's @p material has a tension field; @p warp its warp
-     * direction), from the displacement gradients @p grad_u at the
-     * quadrature points: the one definition of the wrinkled and slack
-     * areas that summary.json and the VTU share.
+     * The wrinkling of the cell @p points is initialized on (its region's
+     * @p material has a tension field): the one definition of the
+     * wrinkled and slack areas that summary.json and the VTU share.
      */
     CellWrinkling
-    cell_wrinkling(const FEValues<2, 3>            &fe_values,
-                   const std::vector<Tensor<2, 3>> &grad_u,
-                   const membrane::RegionMaterial  &material,
-                   const Tensor<1, 3>              &warp);
+    cell_wrinkling(const CellKinematics           &points,
+                   const membrane::RegionMaterial &material);
 
     /// Compute the membrane cell fields at the ghosted displacement @p u.
     CellFields
-    membrane_cell_fields(const Mapping<2, 3>             &mapping,
-                         const DoFHandler<2, 3>          &dof_handler,
-                         const membrane::MaterialRegions &materials,
-                         const geometry::SceneGenerator  &geometry,
-                         const LA::Vector                &u);
+    membrane_cell_fields(const Mapping<2, 3>               &mapping,
+                         const DoFHandler<2, 3>            &dof_handler,
+                         const membrane::ReferenceGeometry &reference,
+                         const membrane::MaterialRegions   &materials,
+                         const geometry::SceneGenerator    &geometry,
+                         const LA::Vector                  &u);
 
     /**
      * The membrane (in-plane) strain energy int H W(C) dA [J] of this
@@ -105,11 +160,12 @@ namespace pneuma
      * the assembly's Gauss points.
      */
     double
-    membrane_strain_energy(const Mapping<2, 3>             &mapping,
-                           const DoFHandler<2, 3>          &dof_handler,
-                           const membrane::MaterialRegions &materials,
-                           const geometry::SceneGenerator  &geometry,
-                           const LA::Vector                &u);
+    membrane_strain_energy(const Mapping<2, 3>               &mapping,
+                           const DoFHandler<2, 3>            &dof_handler,
+                           const membrane::ReferenceGeometry &reference,
+                           const membrane::MaterialRegions   &materials,
+                           const geometry::SceneGenerator    &geometry,
+                           const LA::Vector                  &u);
 
     /// The wrinkling of the regions that wrinkle, over all ranks.
     struct WrinklingSummary
@@ -123,10 +179,11 @@ namespace pneuma
 
     /// The wrinkling summary at the ghosted displacement @p u.
     WrinklingSummary
-    wrinkling_summary(const Mapping<2, 3>             &mapping,
-                      const DoFHandler<2, 3>          &dof_handler,
-                      const membrane::MaterialRegions &materials,
-                      const geometry::SceneGenerator  &geometry,
-                      const LA::Vector                &u);
+    wrinkling_summary(const Mapping<2, 3>               &mapping,
+                      const DoFHandler<2, 3>            &dof_handler,
+                      const membrane::ReferenceGeometry &reference,
+                      const membrane::MaterialRegions   &materials,
+                      const geometry::SceneGenerator    &geometry,
+                      const LA::Vector                  &u);
   } // namespace postprocess
 } // namespace pneuma
