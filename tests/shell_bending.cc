@@ -26,7 +26,7 @@
 //   along the strip, the elastica of P L^2/(E2 I) = 4.
 // The same on 2 ranks.
 
-#include "test_tools.h"
+#include "shell_strip.h"
 
 #include <array>
 #include <cmath>
@@ -80,22 +80,12 @@ namespace
              const unsigned int refinements,
              const double       P)
   {
-    return {{"Geometry/Type", "rectangle"},
-            {"Geometry/rectangle/Length", "1"},
-            {"Geometry/rectangle/Width", "0.1"},
-            {"Geometry/Global refinements", std::to_string(refinements)},
-            {"Discretisation/Polynomial degree", std::to_string(degree)},
-            {"Materials/Region 0/Thickness", "0.01"},
-            {"Materials/Region 0/Bending", "shell"},
-            {"Materials/Region 0/Saint Venant-Kirchhoff/Young's modulus",
-             "1e9"},
-            {"Materials/Region 0/Saint Venant-Kirchhoff/Poisson's ratio", "0"},
-            {"Bending/Clamped boundaries", "0"},
-            {"Boundary conditions/Fixed boundaries", "0: xyz"},
-            {"Loads/Line load boundaries", "1"},
-            {"Loads/Line load/Function expression",
-             "0; 0; " + pneuma_test::number(P / 0.1) + "*t"},
-            {"Output/Monitor points", "0.5, 0, 0"}};
+    auto settings = pneuma_test::shell_strip(degree, refinements);
+    settings.insert(settings.end(),
+                    {{"Loads/Line load boundaries", "1"},
+                     {"Loads/Line load/Function expression",
+                      "0; 0; " + pneuma_test::number(P / 0.1) + "*t"}});
+    return settings;
   }
 
   /// The elastica of a cantilever under a dead tip load P L^2/EI = a2

@@ -22,7 +22,7 @@
 //   membrane energy t A E/2 ((lambda^2 - 1)/2)^2; the bending energy zero.
 // The same on 2 ranks.
 
-#include "test_tools.h"
+#include "shell_strip.h"
 
 #include <cmath>
 #include <cstdio>
@@ -37,19 +37,7 @@ namespace
   pneuma_test::Settings
   strip()
   {
-    return {{"Geometry/Type", "rectangle"},
-            {"Geometry/rectangle/Length", "1"},
-            {"Geometry/rectangle/Width", "0.1"},
-            {"Geometry/Global refinements", "2"},
-            {"Discretisation/Polynomial degree", "2"},
-            {"Materials/Region 0/Thickness", "0.01"},
-            {"Materials/Region 0/Bending", "shell"},
-            {"Materials/Region 0/Saint Venant-Kirchhoff/Young's modulus",
-             "1e9"},
-            {"Materials/Region 0/Saint Venant-Kirchhoff/Poisson's ratio", "0"},
-            {"Bending/Clamped boundaries", "0"},
-            {"Boundary conditions/Fixed boundaries", "0: xyz"},
-            {"Output/Monitor points", "0.5, 0, 0"}};
+    return pneuma_test::shell_strip(2, 2);
   }
 
   /// The history row at time @p t.
