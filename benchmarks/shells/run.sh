@@ -7,7 +7,9 @@
 # wall time, peak memory, Newton iterations, assembly seconds per
 # iteration (the cells' and the edges' terms; the bending's share is the
 # difference) and linear-solve seconds per iteration, and the bending
-# energy's share of the walls' strain energy.
+# energy's share of the walls' strain energy. WALLS may also name
+# membrane-assumed and shell-displacement (Membrane strains = assumed on a
+# membrane, = displacement on a shell: the cost of the assumed strains).
 # Usage: [REFINEMENTS="4 5"] [WALLS="membrane shell"] benchmarks/shells/run.sh [OUT]
 # (from anywhere; builds if needed)
 set -euo pipefail
@@ -26,14 +28,21 @@ echo "|---|---|---|---|---|---|---|---|---|---|"
 for r in ${REFINEMENTS:-4 5}; do
   for walls in ${WALLS:-membrane shell}; do
     d="$out/tube-$r-$walls"
-    bending=none
-    [ "$walls" = shell ] && bending=shell
+    bending=none strains=auto
+    case "$walls" in
+      shell) bending=shell ;;
+      shell-displacement) bending=shell strains=displacement ;;
+      membrane-assumed) strains=assumed ;;
+    esac
     /usr/bin/time -f "%e %M" -o "$out/time" "$pneuma" "$here/tube.prm" \
       "${quiet[@]}" --set "Geometry/Global refinements=$r" \
       --set "Output/Directory=$d" \
       --set "Materials/Region 0/Bending=$bending" \
       --set "Materials/Region 1/Bending=$bending" \
-      --set "Materials/Region 2/Bending=$bending" > /dev/null
+      --set "Materials/Region 2/Bending=$bending" \
+      --set "Materials/Region 0/Membrane strains=$strains" \
+      --set "Materials/Region 1/Membrane strains=$strains" \
+      --set "Materials/Region 2/Membrane strains=$strains" > /dev/null
     read -r wall kb < <(tail -n 1 "$out/time")
     /usr/bin/python3 - "$d/summary.json" "$r" "$walls" "$wall" \
       "$((kb / 1024))" <<'PY'
