@@ -25,6 +25,7 @@
 //    the period 2 pi sqrt(M/K) against the one of the run (0.5 %).
 
 #include "test_tools.h"
+#include "vibration.h"
 
 #include <cmath>
 #include <cstdio>
@@ -63,48 +64,6 @@ namespace
     return ok;
   }
 
-  /// The times at which @p column crosses @p level after @p from (linear
-  /// between rows).
-  std::vector<double>
-  crossings(const pneuma::RunResult &s,
-            const std::string       &column,
-            const double             level,
-            const double             from)
-  {
-    std::vector<double> z;
-    double              t0 = 0., u0 = 0.;
-    bool                first = true;
-    for (const auto &row : s.history)
-      {
-        const double t = row.get("time"), u = row.get(column) - level;
-        if (t <= from)
-          continue;
-        if (!first && (u0 < 0.) != (u < 0.))
-          z.push_back(t0 + (t - t0) * u0 / (u0 - u));
-        t0    = t;
-        u0    = u;
-        first = false;
-      }
-    return z;
-  }
-
-  /// The period of a signal crossing its level twice per period: the
-  /// slope of a least-squares line through the crossings.
-  double
-  period(const std::vector<double> &z)
-  {
-    const double n = z.size(), k_mean = 0.5 * (n - 1.);
-    double       z_mean = 0., skz = 0., skk = 0.;
-    for (const double zk : z)
-      z_mean += zk / n;
-    for (unsigned int k = 0; k < z.size(); ++k)
-      {
-        skz += (k - k_mean) * (z[k] - z_mean);
-        skk += (k - k_mean) * (k - k_mean);
-      }
-    return 2. * skz / skk;
-  }
-
   bool
   string_period()
   {
@@ -120,9 +79,9 @@ namespace
     if (!print(r.exit_code == 0 && modal.exit_code == 0,
                "string: the runs finish"))
       return false;
-    const auto   z     = crossings(r, "cable1_mid_u_z", 0., 1.);
+    const auto   z     = pneuma_test::crossings(r, "cable1_mid_u_z", 0., 1.);
     bool         ok    = print(z.size() >= 18, "string: at least 9 periods");
-    const double value = period(z);
+    const double value = pneuma_test::period(z);
     ok                 = pneuma_test::check("string: period against 2L/c [s]",
                             value,
                             2. * L / speed,
@@ -171,8 +130,11 @@ namespace
          && ok;
     return pneuma_test::check(
              "mass scaling: period over the unscaled one",
-             period(crossings(scaled, "cable1_mid_u_z", 0., 1.)),
-             2. * period(crossings(plain, "cable1_mid_u_z", 0., 1.)),
+             pneuma_test::period(
+               pneuma_test::crossings(scaled, "cable1_mid_u_z", 0., 1.)),
+             2.
+               * pneuma_test::period(
+                 pneuma_test::crossings(plain, "cable1_mid_u_z", 0., 1.)),
              5e-3)
            && ok;
   }
@@ -195,7 +157,8 @@ namespace
     double plateau = 0.;
     for (const auto &row : r.history)
       plateau = std::max(plateau, row.get("cable1_mid_u_z"));
-    const auto z = crossings(r, "cable1_mid_u_z", 0.5 * plateau, 0.);
+    const auto z =
+      pneuma_test::crossings(r, "cable1_mid_u_z", 0.5 * plateau, 0.);
     if (!print(z.size() == 2, "pulse: the mid-point rises and falls once"))
       return false;
     bool ok = pneuma_test::check("pulse: speed to the mid-point [m/s]",
@@ -259,10 +222,10 @@ namespace
     const double K     = 12. * M_PI * kappa * p_abs * l * R
                      + 48. * M_PI * mu * H * std::pow(l, -6.) - 8. * M_PI * N;
     const double M = 4. * M_PI * R * R * density * H;
-    const auto   z = crossings(r, "c1_volume", V, 2.);
+    const auto   z = pneuma_test::crossings(r, "c1_volume", V, 2.);
     ok             = print(z.size() >= 10, "sphere: at least 5 periods") && ok;
     return pneuma_test::check("sphere: breathing period [s]",
-                              period(z),
+                              pneuma_test::period(z),
                               2. * M_PI * std::sqrt(M / K),
                               5e-3)
            && ok;
