@@ -116,6 +116,25 @@ namespace pneuma
         BorderedVector
         load_rate(const double t0, const double h);
 
+        /// The condensed tangents at (state + k ds v, t + k dt), k = 1, 2.
+        struct ShiftedTangents
+        {
+          std::array<LA::SparseMatrix, 2> K;
+          std::array<BorderCoupling, 2>   c;
+          std::vector<EnergyBorder>       e;
+          std::vector<CondensedTangent>   K_c;
+        };
+        void
+        shifted_tangents(const BorderedVector &v,
+                         const double          ds,
+                         const double          dt,
+                         ShiftedTangents      &out) const;
+        /// |(K_1 - K_c) v| / |K_c v| on the free dofs: the relative
+        /// change of the tangent over the first shift.
+        double
+        relative_change(const CondensedTangent &K_1,
+                        const BorderedVector   &v) const;
+
         Model                            &model;
         const BorderedVector             &state;
         const double                      t;
@@ -350,6 +369,42 @@ namespace pneuma
       }
 
       void
+      EigenSolve::shifted_tangents(const BorderedVector &v,
+                                   const double          ds,
+                                   const double          dt,
+                                   ShiftedTangents      &out) const
+      {
+        for (unsigned int k = 0; k < 2; ++k)
+          {
+            BorderedVector shifted_state(state);
+            shifted_state.add((k + 1) * ds, v);
+            out.K[k].copy_from(model.tangent_matrix());
+            model.assemble_tangent(shifted_state,
+                                   t + (k + 1) * dt,
+                                   out.K[k],
+                                   out.c[k]);
+            out.e.push_back(energy_border(out.c[k]));
+          }
+        for (unsigned int k = 0; k < 2; ++k)
+          out.K_c.emplace_back(out.K[k], out.c[k], out.e[k]);
+      }
+
+      double
+      EigenSolve::relative_change(const CondensedTangent &K_1,
+                                  const BorderedVector   &v) const
+      {
+        LA::Vector free(v.field), y0(v.field), y1(v.field);
+        constraints.set_zero(free);
+        K_c->vmult(y0, free);
+        K_1.vmult(y1, free);
+        constraints.set_zero(y0);
+        constraints.set_zero(y1);
+        y1 -= y0;
+        const double norm = y0.l2_norm();
+        return norm > 0. ? y1.l2_norm() / norm : 0.;
+      }
+
+      void
       EigenSolve::buckling()
       {
         // The base state must be stable: K_c is the metric.
@@ -367,31 +422,43 @@ namespace pneuma
         // The state's rate du/dt under the loads' rate dR/dt (from the
         // left: the loads of the step that led here). h: 1e-3 of the
         // pseudo time (second order: the tangent of a nonlinear
-        // prebuckling path to about 1e-6; the difference of tangents is
-        // not lost in round-off).
-        const double                    h = t > 0. ? -1e-3 * t : 1e-3;
-        const BorderedVector            v = load_rate(t, h);
-        std::array<LA::SparseMatrix, 2> Kh;
-        std::array<BorderCoupling, 2>   ch;
-        std::vector<EnergyBorder>       eh;
-        std::vector<CondensedTangent>   Kh_c;
-        for (unsigned int s = 0; s < 2; ++s)
+        // prebuckling path to about 1e-6).
+        const double         h = t > 0. ? -1e-3 * t : 1e-3;
+        const BorderedVector v = load_rate(t, h);
+        ShiftedTangents      along;
+        shifted_tangents(v, h, h, along);
+        // The tangent's change over the step must stand clear of the
+        // round-off of the tangent itself (whose membrane stiffness E t
+        // can exceed the load's stiffness by 1e6 and more under a
+        // reference load far below the buckling load): where it changes
+        // by less than 1e-6, the state's part of the derivative takes a
+        // longer step (up to a tenth of the state), the loads' part keeps
+        // h (at the same state their difference has no round-off).
+        const double change = relative_change(along.K_c[0], v);
+        const double longer =
+          change > 0. ? std::min(1e-6 / change, 0.1 * std::abs(t / h)) : 1.;
+        ShiftedTangents              state_part, load_part;
+        std::unique_ptr<TangentRate> load_rate_part;
+        std::unique_ptr<TangentRate> rate;
+        if (longer <= 1.)
+          rate = std::make_unique<TangentRate>(
+            *K_c, along.K_c[0], along.K_c[1], h, constraints);
+        else
           {
-            BorderedVector shifted_state(state);
-            shifted_state.add((s + 1) * h, v);
-            Kh[s].copy_from(K);
-            model.assemble_tangent(shifted_state,
-                                   t + (s + 1) * h,
-                                   Kh[s],
-                                   ch[s]);
-            eh.push_back(energy_border(ch[s]));
+            shifted_tangents(v, longer * h, 0., state_part);
+            shifted_tangents(v, 0., h, load_part);
+            load_rate_part = std::make_unique<TangentRate>(
+              *K_c, load_part.K_c[0], load_part.K_c[1], h, constraints);
+            rate = std::make_unique<TangentRate>(*K_c,
+                                                 state_part.K_c[0],
+                                                 state_part.K_c[1],
+                                                 longer * h,
+                                                 constraints,
+                                                 load_rate_part.get());
           }
-        for (unsigned int s = 0; s < 2; ++s)
-          Kh_c.emplace_back(Kh[s], ch[s], eh[s]);
-        const TangentRate rate(*K_c, Kh_c[0], Kh_c[1], h, constraints);
         // The largest nu = 1/lambda.
         arpack(
-          rate, *K_c, inverse, Arpack::algebraically_largest, p.n_modes, 0.);
+          *rate, *K_c, inverse, Arpack::algebraically_largest, p.n_modes, 0.);
         for (const double nu : mu)
           {
             if (nu == 0.)
@@ -400,7 +467,7 @@ namespace pneuma
             result.values.push_back(1. / nu);
           }
         result.residual =
-          relative_residual(rate, *K_c, inverse, mu, result.modes, true);
+          relative_residual(*rate, *K_c, inverse, mu, result.modes, true);
         result.substitutions = inverse.solves;
       }
 

@@ -238,12 +238,14 @@ namespace pneuma
                     const CondensedTangent          &K1,
                     const CondensedTangent          &K2,
                     const double                     h,
-                    const AffineConstraints<double> &constraints)
+                    const AffineConstraints<double> &constraints,
+                    const TangentRate               *plus = nullptr)
           : K0(K0)
           , K1(K1)
           , K2(K2)
           , h(h)
           , constraints(constraints)
+          , plus(plus)
         {
         }
         void
@@ -257,6 +259,11 @@ namespace pneuma
           y *= -3.;
           y.add(4., y1, -1., y2);
           y *= -1. / (2. * h);
+          if (plus)
+            {
+              plus->vmult(y1, x);
+              y += y1;
+            }
           constraints.set_zero(y);
         }
 
@@ -264,6 +271,9 @@ namespace pneuma
         const CondensedTangent          &K0, &K1, &K2;
         const double                     h;
         const AffineConstraints<double> &constraints;
+        /// Another rate added to this one (the state's and the loads'
+        /// parts of a split derivative).
+        const TangentRate *plus;
       };
 
       /**
