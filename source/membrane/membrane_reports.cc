@@ -354,6 +354,10 @@ namespace pneuma
                         moment += cross_product_3d(x, r);
                       }
                   }
+          // A clamped shell edge's weak clamp acts on the nodes next to it
+          // too: its moment (its forces add up to zero).
+          if (shell && shell->clamp_moments().count(id) > 0)
+            moment += shell->clamp_moments().at(id);
           std::array<double, 6> fm;
           for (unsigned int c = 0; c < 3; ++c)
             {

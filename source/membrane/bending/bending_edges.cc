@@ -49,6 +49,11 @@ namespace pneuma
           /// force; empty without one).
           Vector<double>                       load;
           std::vector<types::global_dof_index> dofs;
+          /// A clamped edge's boundary and the moment its clamp exerts
+          /// (BendingEdges::clamp_moments).
+          bool               clamped  = false;
+          types::boundary_id boundary = 0;
+          Tensor<1, 3>       clamp_moment;
         };
 
         Vec<double>
@@ -272,6 +277,7 @@ namespace pneuma
       BendingEdges::begin(const Assembly &a)
       {
         sum = 0.;
+        clamp_moment.clear();
         external =
           context.parameters.moment_edges.empty() ? nullptr : a.external;
         constraints = a.constraints;
@@ -299,8 +305,12 @@ namespace pneuma
                                   FaceTerms::Scratch            &scratch_data,
                                   FaceTerms::Record &record_data) const
       {
-        auto &record  = static_cast<EdgeRecord &>(record_data);
-        record.energy = 0.;
+        auto &record   = static_cast<EdgeRecord &>(record_data);
+        record.energy  = 0.;
+        record.clamped = false;
+        // (A record is reused from face to face: an edge moment's load of
+        // an earlier boundary face must not be committed again.)
+        record.load.reinit(0);
         std::array<DoFHandler<2, 3>::active_cell_iterator, 2> cell;
         std::array<unsigned int, 2>                           face;
         std::array<const RegionStiffness *, 2>                k;
@@ -403,6 +413,7 @@ namespace pneuma
       {
         auto &record             = static_cast<EdgeRecord &>(record_data);
         record.energy            = 0.;
+        record.clamped           = false;
         const RegionStiffness *k = context.of(cell->material_id());
         record.load.reinit(0);
         const types::boundary_id id = cell->face(face)->boundary_id();
@@ -415,9 +426,13 @@ namespace pneuma
         current_nodes(s, 0, s.dof, local_u);
         const Vec<double> warp = warp_of(context, cell);
         EdgeFrame         e;
+        Vector<double>    clamp_force;
         if (clamped)
-          e.penalty = context.parameters.gamma(s.degree) * k->largest
-                      / size_across(s, s.X[0], face);
+          {
+            e.penalty = context.parameters.gamma(s.degree) * k->largest
+                        / size_across(s, s.X[0], face);
+            clamp_force.reinit(local_u.size());
+          }
         if (loaded)
           {
             record.load.reinit(local_u.size());
@@ -449,6 +464,8 @@ namespace pneuma
                                 s.hessian.data(),
                                 residual,
                                 matrix);
+                add_point_terms(
+                  1, &shape, &s.dof, gradient, nullptr, &clamp_force, nullptr);
               }
             if (loaded)
               add_edge_moment(s,
@@ -462,6 +479,22 @@ namespace pneuma
                               residual,
                               record.load,
                               *context.parameters.moment);
+          }
+        if (clamped)
+          {
+            record.clamped      = true;
+            record.boundary     = id;
+            record.clamp_moment = 0;
+            for (unsigned int a = 0; a < s.x[0].size(); ++a)
+              {
+                Tensor<1, 3> x, f;
+                for (unsigned int c = 0; c < 3; ++c)
+                  {
+                    x[c] = s.x[0][a][c];
+                    f[c] = clamp_force[s.dof[a][c]];
+                  }
+                record.clamp_moment -= cross_product_3d(x, f);
+              }
           }
       }
 
@@ -478,6 +511,8 @@ namespace pneuma
       {
         const auto &record = static_cast<const EdgeRecord &>(record_data);
         sum += record.energy;
+        if (record.clamped)
+          clamp_moment[record.boundary] += record.clamp_moment;
         if (external && record.load.size() > 0)
           constraints->distribute_local_to_global(record.load,
                                                   record.dofs,

@@ -169,6 +169,12 @@ namespace pneuma
         return cells->energy() + edges->energy();
       }
 
+      const std::map<types::boundary_id, Tensor<1, 3>> &
+      ShellBending::clamp_moments() const
+      {
+        return edges->clamp_moments();
+      }
+
       namespace
       {
         /// The principal values (larger first) of a symmetric 2x2 @p a.

@@ -18,6 +18,8 @@
 
 #include <pneuma/membrane/bending/shell_bending.h>
 
+#include <map>
+
 namespace pneuma
 {
   namespace membrane
@@ -79,12 +81,29 @@ namespace pneuma
         void
         end() override;
 
+        /**
+         * Per clamped boundary, the moment about the origin that its
+         * clamps exert on the structure at the last assembly, -sum_a x_a x
+         * g_a over the nodes of the cells along it (g the clamp energy's
+         * gradient, x the current positions), on this rank. A weak clamp
+         * holds the rotation through the nodes next to the edge, which are
+         * not supports, so the prescribed dofs' reactions miss it; their
+         * forces add up to zero (the clamp's energy does not change under
+         * a translation), so only the moment is missing.
+         */
+        const std::map<types::boundary_id, Tensor<1, 3>> &
+        clamp_moments() const
+        {
+          return clamp_moment;
+        }
+
       private:
         const ShellContext &context;
         double              sum = 0.;
         /// The assembly's external force vector while edge moments load it.
-        LA::Vector                              *external    = nullptr;
-        const dealii::AffineConstraints<double> *constraints = nullptr;
+        LA::Vector                                *external    = nullptr;
+        const dealii::AffineConstraints<double>   *constraints = nullptr;
+        std::map<types::boundary_id, Tensor<1, 3>> clamp_moment;
       };
     } // namespace bending
   }   // namespace membrane

@@ -160,6 +160,11 @@ namespace pneuma
         /// normal, so the clamping holds it.
         std::vector<std::array<double, 3>>
         clamped_axes() const;
+        /// Per clamped boundary, the moment its clamps exert on the
+        /// structure at the last assembly, on this rank
+        /// (BendingEdges::clamp_moments).
+        const std::map<types::boundary_id, Tensor<1, 3>> &
+        clamp_moments() const;
         /// One line: the regions with bending, their stiffness, the
         /// penalty chosen and the clamped edges.
         std::string
