@@ -85,6 +85,7 @@ check "$dir/valid.prm"              1 "Bending/Clamped boundaries: no region is 
 check "$dir/valid.prm"              1 "Bending/Edge moment boundaries: the mesh has no boundary 7" --set "Materials/Region 0/Bending=shell" --set "Bending/Edge moment boundaries=7"
 check "$dir/valid.prm"              1 "Bending/Edge moment boundaries: no region is a shell" --set "Bending/Edge moment boundaries=0"
 check_mpi "$dir/valid.prm"          1 "Bending/Edge moment/Function expression" --set "Materials/Region 0/Bending=shell" --set "Bending/Edge moment boundaries=0" --set "Bending/Edge moment/Function expression=sqrt(-1-x*x)"
+check_mpi "$dir/valid.prm"          1 "Materials/Region 0/Membrane strains: assumed strains need Q2 cells" --set "Materials/Region 0/Membrane strains=assumed"
 check "$dir/valid.prm"              1 "Loads/Point loads" --set "Loads/Point loads=1, 2"
 check_mpi "$dir/valid.prm"          1 "Loads/Point load/Function expression" --set "Loads/Point loads=0, 0, 0" --set "Loads/Point load/Function expression=0; 0; log(-1)"
 check "$dir/../tensairity_friction.prm" 1 "Cables/Cable 2/Section semi-axes: a semi-axis of" --set "Cables/Cable 2/Section semi-axes=4294967297" --set "Output/Directory=out_bad"

@@ -45,12 +45,12 @@ namespace pneuma
       switch (material.membrane_strains)
         {
           case MembraneStrains::assumed:
-            check_input(degree == 2,
-                        "Materials/Region " + std::to_string(id)
-                          + "/Membrane strains",
-                        "assumed strains need Q2 cells (Finite element "
-                        "degree = 2), the mesh has degree "
-                          + std::to_string(degree));
+            check_input(
+              degree == 2,
+              "Materials/Region " + std::to_string(id) + "/Membrane strains",
+              "assumed strains need Q2 cells (Discretisation/Polynomial "
+              "degree = 2), the mesh has degree "
+                + std::to_string(degree));
             return true;
           case MembraneStrains::displacement:
             return false;
