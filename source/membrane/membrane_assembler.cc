@@ -503,11 +503,9 @@ namespace pneuma
             base_vectors(ctx, P, dN, scratch.u_node, s);
             SymmetricTensor<2, 2> C;
             if (tying)
-              C = unit_symmetric_tensor<2>()
-                  + 2.
-                      * ctx.ref.assumed_strains().strain(*tying,
-                                                         scratch.tying,
-                                                         q);
+              C = ctx.ref.assumed_strains().right_cauchy_green(*tying,
+                                                               scratch.tying,
+                                                               q);
             else
               C = right_cauchy_green({{s.a0, s.a1}});
             if (ctx.want_matrix)

@@ -17,7 +17,7 @@ namespace pneuma
   {
     CellKinematics::CellKinematics(const Mapping<2, 3>               &mapping,
                                    const DoFHandler<2, 3>            &dofs,
-                                   const membrane::ReferenceGeometry *reference)
+                                   const membrane::ReferenceGeometry &reference)
       : quadrature(dofs.get_fe().degree + 1)
       , fe_values(mapping,
                   dofs.get_fe(),
@@ -47,7 +47,7 @@ namespace pneuma
                                                                       grad_u);
       const int                      k = owned_index[cell->active_cell_index()];
       const membrane::TyingGeometry *tying_geometry =
-        reference && k >= 0 ? reference->tying(k) : nullptr;
+        k >= 0 ? reference.tying(k) : nullptr;
       if (!tying_geometry)
         {
           for (unsigned int q = 0; q < n_points(); ++q)
@@ -60,21 +60,20 @@ namespace pneuma
           return;
         }
       // Assumed strains, in the assembly's frame.
-      const auto *dofs = reference->dof_indices(k);
+      const auto *dofs = reference.dof_indices(k);
       for (unsigned int i = 0; i < 3 * u_node.size(); ++i)
-        u_node[reference->node(i)][reference->component(i)] = u[dofs[i]];
-      const auto &rule = reference->assumed_strains();
+        u_node[reference.node(i)][reference.component(i)] = u[dofs[i]];
+      const auto &rule = reference.assumed_strains();
       rule.state(*tying_geometry, u_node, tying);
       for (unsigned int q = 0; q < n_points(); ++q)
         {
           membrane::TangentFrame frame;
           for (unsigned int d = 0; d < 3; ++d)
             for (unsigned int al = 0; al < 2; ++al)
-              frame.e[al][d] = reference->point(k, q).E[al][d];
+              frame.e[al][d] = reference.point(k, q).E[al][d];
           frame.N = cross_product_3d(frame.e[0], frame.e[1]);
           a[q]    = membrane::deformed_tangents(frame, grad_u[q]);
-          C_q[q]  = unit_symmetric_tensor<2>()
-                   + 2. * rule.strain(*tying_geometry, tying, q);
+          C_q[q]  = rule.right_cauchy_green(*tying_geometry, tying, q);
         }
     }
 
@@ -130,7 +129,7 @@ namespace pneuma
                            const geometry::SceneGenerator    &geometry,
                            const LA::Vector                  &u)
     {
-      CellKinematics points(mapping, dof_handler, &reference);
+      CellKinematics points(mapping, dof_handler, reference);
       double         energy = 0.;
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
@@ -198,7 +197,7 @@ namespace pneuma
         dof_handler.get_triangulation().n_active_cells();
       f.values.assign(f.names.size(), Vector<double>(n_cells));
 
-      CellKinematics points(mapping, dof_handler, &reference);
+      CellKinematics points(mapping, dof_handler, reference);
       unsigned int   non_finite = 0;
 
       for (const auto &cell : dof_handler.active_cell_iterators())
@@ -302,7 +301,7 @@ namespace pneuma
       WrinklingSummary result;
       auto            &areas = result.areas;
       double           minor = std::numeric_limits<double>::max();
-      CellKinematics   points(mapping, dof_handler, &reference);
+      CellKinematics   points(mapping, dof_handler, reference);
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {

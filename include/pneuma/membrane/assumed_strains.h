@@ -108,6 +108,16 @@ namespace pneuma
              const TyingState    &s,
              const unsigned int   q) const;
 
+      /// C = I + 2 E of the assumed strain at Gauss point @p q, as the
+      /// laws take it.
+      SymmetricTensor<2, 2>
+      right_cauchy_green(const TyingGeometry &cell,
+                         const TyingState    &s,
+                         const unsigned int   q) const
+      {
+        return unit_symmetric_tensor<2>() + 2. * strain(cell, s, q);
+      }
+
       /// The derivatives of the tying strains by the nodal displacements,
       /// node-major (dof 3 a + d): dE[t][3 a + d].
       void

@@ -80,7 +80,7 @@ namespace pneuma
     public:
       CellKinematics(const Mapping<2, 3>               &mapping,
                      const DoFHandler<2, 3>            &dof_handler,
-                     const membrane::ReferenceGeometry *reference);
+                     const membrane::ReferenceGeometry &reference);
 
       /// At the locally owned @p cell, @p warp its region's warp.
       void
@@ -112,7 +112,7 @@ namespace pneuma
     private:
       const QGauss<2>                          quadrature;
       FEValues<2, 3>                           fe_values;
-      const membrane::ReferenceGeometry       *reference;
+      const membrane::ReferenceGeometry       &reference;
       std::vector<int>                         owned_index;
       std::vector<Tensor<2, 3>>                grad_u;
       std::vector<std::array<double, 3>>       u_node;
